@@ -1,0 +1,18 @@
+# Warning, ISA and sanitizer flags shared by every target of the build.
+add_library(mcd_flags INTERFACE)
+target_compile_options(mcd_flags INTERFACE -Wall -Wextra -ffp-contract=off)
+if(MCD_WERROR)
+  target_compile_options(mcd_flags INTERFACE -Werror)
+endif()
+if(MCD_ARCH)
+  include(CheckCXXCompilerFlag)
+  check_cxx_compiler_flag("-march=${MCD_ARCH}" MCD_HAS_MARCH)
+  if(MCD_HAS_MARCH)
+    add_compile_options(-march=${MCD_ARCH})
+  endif()
+endif()
+if(MCD_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=undefined
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()

@@ -1,0 +1,17 @@
+# Debian's OpenImageIO config lists include directories (e.g. /usr/include/opencv4)
+# that exist only when optional -dev packages are installed; drop the missing ones
+# so CMake's generate step does not fail. Used by our build and by our package config.
+foreach(_mcd_target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
+  if(TARGET ${_mcd_target})
+    get_target_property(_mcd_dirs ${_mcd_target} INTERFACE_INCLUDE_DIRECTORIES)
+    if(_mcd_dirs)
+      set(_mcd_existing)
+      foreach(_mcd_dir IN LISTS _mcd_dirs)
+        if(EXISTS "${_mcd_dir}" OR _mcd_dir MATCHES "^\\$<")
+          list(APPEND _mcd_existing "${_mcd_dir}")
+        endif()
+      endforeach()
+      set_target_properties(${_mcd_target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_mcd_existing}")
+    endif()
+  endif()
+endforeach()

@@ -1,0 +1,122 @@
+// median_walker.h: the one window walker for median filters. A filter is a
+// rule saying which neighbours are viable; the walker takes the median of
+// the viable finite values of each window, through the SIMD median network
+// wherever a whole unclipped window is viable and finite, and through
+// in-place selection elsewhere.
+#pragma once
+
+#include "median_kernel.h"
+#include "operation.h"
+#include "pixel_block.h"
+#include "window.h"
+
+#include <vector>
+
+namespace mcdenoise {
+
+/// The beauty as the median walker reads it: one contiguous plane per
+/// channel over `region`, and per channel a flag per ROI pixel telling
+/// whether its window holds only finite values (empty when all are finite).
+struct MedianSource {
+    OIIO::ROI region;
+    OIIO::ROI roi;
+    int radius = 0;
+    std::vector<std::vector<float>> planes;
+    std::vector<std::vector<char>> window_finite;
+
+    const float* plane_row(int c, int y) const
+    {
+        return planes[size_t(c)].data() + size_t(y - region.ybegin) * region.width()
+               - region.xbegin;
+    }
+    bool finite_window(int c, int x, int y) const
+    {
+        return window_finite.empty()
+               || window_finite[size_t(c)][size_t(y - roi.ybegin) * roi.width()
+                                           + size_t(x - roi.xbegin)];
+    }
+};
+
+/// Read the beauty for a median of window side `size` over `roi`.
+/// Returns false with `dst`'s error set if the pixels cannot be read.
+bool load_median_source(const char* op, OIIO::ImageBuf& dst,
+                        const OIIO::ImageBuf& beauty, const OIIO::ROI& roi,
+                        int size, MedianSource& source);
+
+/// A viability rule for the median walker. `Rule` provides
+/// `bool uniform(int x, int y) const`: every pixel of (x, y)'s clipped window
+/// is viable; and `bool viable(int px, int py, int qx, int qy) const`.
+/// Computes the median filter of one strip into `result`.
+template<class Rule>
+void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& strip,
+                  ResultPixels& result)
+{
+    using OIIO::simd::vfloat8;
+    constexpr int lanes = 8;
+    const int r = src.radius, k = 2 * r + 1;
+    const OIIO::ROI& reg = src.region;
+    const MedianNetwork* net = MedianNetwork::for_count(k * k);
+    std::vector<vfloat8> slots(net ? size_t(net->slots()) : 0);
+    std::vector<float> gathered(size_t(k) * k);
+    std::vector<char> fast(size_t(strip.width()));
+    int64_t empty = 0;
+
+    auto unclipped = [&](int x, int y) {
+        return x - r >= reg.xbegin && x + r < reg.xend && y - r >= reg.ybegin
+               && y + r < reg.yend;
+    };
+    auto network_batch = [&](int c, int x, int y) {
+        for (int dy = -r, i = 0; dy <= r; ++dy) {
+            const float* row = src.plane_row(c, y + dy) + x;
+            for (int dx = -r; dx <= r; ++dx, ++i)
+                slots[size_t(i)].load(row + dx);
+        }
+        net->run(slots.data());
+        float medians[lanes];
+        slots[size_t(net->result_slot())].store(medians);
+        for (int l = 0; l < lanes; ++l)
+            result.pixel(x + l, y)[c] = medians[l];
+    };
+    auto gather_one = [&](int c, int x, int y) {
+        const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
+        const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
+        int n = 0;
+        for (int qy = ys.begin; qy < ys.end; ++qy) {
+            const float* row = src.plane_row(c, qy);
+            for (int qx = xs.begin; qx < xs.end; ++qx)
+                if (std::isfinite(row[qx]) && rule.viable(x, y, qx, qy))
+                    gathered[size_t(n++)] = row[qx];
+        }
+        empty += n == 0;
+        result.pixel(x, y)[c] = n ? median_in_place(gathered.data(), n) : 0.0f;
+    };
+
+    for (int y = strip.ybegin; y < strip.yend; ++y) {
+        for (int x = strip.xbegin; x < strip.xend; ++x)
+            fast[size_t(x - strip.xbegin)] = net && unclipped(x, y) && rule.uniform(x, y);
+        for (int c = 0; c < strip.nchannels(); ++c) {
+            auto by_network = [&](int x) {
+                return fast[size_t(x - strip.xbegin)] && src.finite_window(c, x, y);
+            };
+            int x = strip.xbegin;
+            while (x < strip.xend) {
+                int run = x;  // [x, run): windows the network can take
+                while (run < strip.xend && by_network(run))
+                    ++run;
+                if (run - x >= lanes) {
+                    for (int b = x; b < run; b += lanes)
+                        network_batch(c, std::min(b, run - lanes), y);
+                } else {
+                    for (int g = x; g < run; ++g)
+                        gather_one(c, g, y);
+                }
+                x = run;
+                if (x < strip.xend)  // the window that ended the run
+                    gather_one(c, x++, y);
+            }
+        }
+    }
+    result.empty_windows += empty;
+}
+
+}  // namespace mcdenoise
