@@ -25,11 +25,11 @@ Kernel1D binomial_kernel(int size)
     k.radius = size / 2;
     k.weights.assign(size_t(size), 0.0);
     k.weights[0] = 1.0;
-    for (int n = 1; n < size; ++n)  // next row of Pascal's triangle, halved
+    for (int n = 1; n < size; ++n) {  // next row of Pascal's triangle, halved
         for (int i = n; i >= 1; --i)
             k.weights[i] = 0.5 * (k.weights[i] + k.weights[i - 1]);
-    for (int n = 1; n < size; ++n)
         k.weights[0] *= 0.5;
+    }
     return k;
 }
 
