@@ -1,10 +1,11 @@
-// median_kernel.cpp: building pruned median networks, and generic selection.
+// median_kernel.cpp: the unrolled SIMD median networks and in-place selection.
 #include "median_kernel.h"
 
+#include "median_network.h"
+
+#include <OpenImageIO/simd.h>
+
 #include <algorithm>
-#include <array>
-#include <memory>
-#include <mutex>
 #include <utility>
 
 namespace mcdenoise {
@@ -21,72 +22,59 @@ float median_in_place(float* values, int n)
 
 namespace {
 
-// Batcher's odd-even merge sort on `n` (a power of two) inputs: comparator
-// (i, j) puts the smaller value in position i.
-std::vector<std::pair<int, int>> batcher_sort(int n)
+using OIIO::simd::vfloat8;
+
+template<int K>
+struct WindowNet {
+    static constexpr auto net = network::build_median_net<K * K>();
+};
+
+template<int K, size_t... I>
+inline void run_ops(vfloat8* v, std::index_sequence<I...>)
 {
-    std::vector<std::pair<int, int>> net;
-    for (int p = 1; p < n; p *= 2)
-        for (int k = p; k >= 1; k /= 2)
-            for (int j = k % p; j + k < n; j += 2 * k)
-                for (int i = 0; i < std::min(k, n - j - k); ++i)
-                    if ((i + j) / (2 * p) == (i + j + k) / (2 * p))
-                        net.emplace_back(i + j, i + j + k);
-    return net;
+    constexpr auto& net = WindowNet<K>::net;
+    auto step = [v](const network::Op& op) {
+        const vfloat8 a = v[op.a], b = v[op.b];
+        v[op.to_min] = OIIO::simd::min(a, b);
+        v[op.to_max] = OIIO::simd::max(a, b);
+    };
+    (step(net.ops[I]), ...);
+}
+
+template<int K>
+void window_median8_k(const float* const* rows, float* medians)
+{
+    constexpr int r = K / 2;
+    vfloat8 v[K * K + 1];
+    for (int dy = 0; dy < K; ++dy)
+        for (int dx = 0; dx < K; ++dx)
+            v[dy * K + dx].load(rows[dy] + dx - r);
+    run_ops<K>(v, std::make_index_sequence<size_t(WindowNet<K>::net.count)>());
+    v[WindowNet<K>::net.result].store(medians);
 }
 
 }  // namespace
 
-MedianNetwork::MedianNetwork(int count)
-    : m_count(count)
+WindowMedian8 window_median8(int size)
 {
-    int padded = 1;
-    while (padded < count)
-        padded *= 2;
-    constexpr int infinity = -1;  // a padding position: holds +inf
-    const int scratch      = count;
-
-    // Follow each sorted position to the slot holding its value; a
-    // comparator against +inf is then a renaming or nothing at all.
-    std::vector<int> slot_of(size_t(padded), infinity);
-    for (int i = 0; i < count; ++i)
-        slot_of[size_t(i)] = i;
-    std::vector<std::pair<int, int>> live;  // (slot gets min, slot gets max)
-    for (auto [i, j] : batcher_sort(padded)) {
-        int& lo = slot_of[size_t(i)];
-        int& hi = slot_of[size_t(j)];
-        if (lo == infinity)
-            std::swap(lo, hi);
-        else if (hi != infinity)
-            live.emplace_back(lo, hi);
+    switch (size) {
+    case 3: return window_median8_k<3>;
+    case 5: return window_median8_k<5>;
+    case 7: return window_median8_k<7>;
+    case 9: return window_median8_k<9>;
+    default: return nullptr;
     }
-    m_result = slot_of[size_t((count - 1) / 2)];
-
-    // Walk back from the median, keeping only what reaches it.
-    std::vector<char> needed(size_t(count) + 1, 0);
-    needed[size_t(m_result)] = 1;
-    for (auto it = live.rbegin(); it != live.rend(); ++it) {
-        const auto [lo, hi] = *it;
-        const bool want_min = needed[size_t(lo)], want_max = needed[size_t(hi)];
-        if (!want_min && !want_max)
-            continue;
-        m_ops.push_back({ lo, hi, want_min ? lo : scratch, want_max ? hi : scratch });
-        needed[size_t(lo)] = needed[size_t(hi)] = 1;
-    }
-    std::reverse(m_ops.begin(), m_ops.end());
 }
 
-const MedianNetwork* MedianNetwork::for_count(int count)
+int median_network_size(int size)
 {
-    if (count < 1 || count > max_count || count % 2 == 0)
-        return nullptr;
-    static std::array<std::unique_ptr<MedianNetwork>, max_count + 1> cache;
-    static std::mutex mutex;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto& net = cache[size_t(count)];
-    if (!net)
-        net.reset(new MedianNetwork(count));
-    return net.get();
+    switch (size) {
+    case 3: return WindowNet<3>::net.count;
+    case 5: return WindowNet<5>::net.count;
+    case 7: return WindowNet<7>::net.count;
+    case 9: return WindowNet<9>::net.count;
+    default: return 0;
+    }
 }
 
 }  // namespace mcdenoise

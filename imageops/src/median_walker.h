@@ -51,12 +51,11 @@ template<class Rule>
 void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& strip,
                   ResultPixels& result)
 {
-    using OIIO::simd::vfloat8;
-    constexpr int lanes = 8;
+    constexpr int lanes = median_lanes;
     const int r = src.radius, k = 2 * r + 1;
     const OIIO::ROI& reg = src.region;
-    const MedianNetwork* net = MedianNetwork::for_count(k * k);
-    std::vector<vfloat8> slots(net ? size_t(net->slots()) : 0);
+    const WindowMedian8 net = window_median8(k);
+    std::vector<const float*> rows(static_cast<size_t>(k), nullptr);
     std::vector<float> gathered(size_t(k) * k);
     std::vector<char> fast(size_t(strip.width()));
     int64_t empty = 0;
@@ -66,14 +65,10 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
                && y + r < reg.yend;
     };
     auto network_batch = [&](int c, int x, int y) {
-        for (int dy = -r, i = 0; dy <= r; ++dy) {
-            const float* row = src.plane_row(c, y + dy) + x;
-            for (int dx = -r; dx <= r; ++dx, ++i)
-                slots[size_t(i)].load(row + dx);
-        }
-        net->run(slots.data());
+        for (int dy = -r; dy <= r; ++dy)
+            rows[size_t(dy + r)] = src.plane_row(c, y + dy) + x;
         float medians[lanes];
-        slots[size_t(net->result_slot())].store(medians);
+        net(rows.data(), medians);
         for (int l = 0; l < lanes; ++l)
             result.pixel(x + l, y)[c] = medians[l];
     };
