@@ -29,3 +29,4 @@
 /// - **In place.** `dst` may be the same image as `beauty`.
 
 #include <mcdenoise/simple.h>
+#include <mcdenoise/metrics.h>
