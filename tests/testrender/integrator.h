@@ -1,0 +1,31 @@
+// integrator.h: unidirectional path tracing with next-event estimation and
+// multiple importance sampling (power heuristic), and the geometric AOVs of
+// a pixel's center ray.
+#pragma once
+
+#include "rng.h"
+#include "scene.h"
+
+namespace testrender {
+
+/// What one camera sample returns.
+struct PathResult {
+    Vec3 radiance;
+    Vec3 albedo;  ///< reflectance of the first non-specular hit, times mirror tints
+    Vec3 normal;  ///< first-hit normal facing the camera; 0 for a miss
+};
+
+/// Trace one path from `camera_ray`, drawing random numbers from `rng`.
+PathResult trace_path(const Scene& scene, const Ray& camera_ray, SampleRng& rng);
+
+/// The AOVs taken from one ray per pixel (through the pixel center and the
+/// lens center), because averaging them over samples has no meaning.
+struct GeometryAovs {
+    float depth;  ///< first-hit distance, +Inf for a miss
+    int id;       ///< object id of the first hit, -1 for a miss
+    int reflid;   ///< at a mirror first hit, object id its reflection ray hits; else -1
+};
+
+GeometryAovs trace_geometry(const Scene& scene, const Ray& center_ray);
+
+}  // namespace testrender

@@ -1,0 +1,56 @@
+// materials.h: the surface models: Lambertian (textured), perfect mirror,
+// glossy (Lambertian base + GGX microfacet lobe), smooth glass, and area-light
+// emitters. Directions are in the local shading frame: the normal is +z and
+// faces the outgoing direction wo.
+#pragma once
+
+#include "math.h"
+#include "textures.h"
+
+namespace testrender {
+
+enum class MaterialKind { diffuse, mirror, glossy, glass, emitter };
+
+struct Material {
+    MaterialKind kind = MaterialKind::diffuse;
+    Texture albedo;                  ///< diffuse reflectance (diffuse; glossy's base)
+    Vec3 specular { 1, 1, 1 };       ///< mirror tint; glossy's normal-incidence Fresnel F0
+    double roughness = 0.2;          ///< glossy: GGX alpha
+    double ior = 1.5;                ///< glass: index of refraction
+    Vec3 emission { 0, 0, 0 };       ///< emitter: radiance leaving the front side
+
+    static Material diffuse(const Texture& t);
+    static Material mirror(const Vec3& tint);
+    static Material glossy(const Texture& base, const Vec3& f0, double roughness);
+    static Material glass(double ior);
+    static Material emitter(const Vec3& radiance);
+
+    /// Mirror and glass: a single direction, no next-event estimation.
+    bool is_specular() const { return kind == MaterialKind::mirror || kind == MaterialKind::glass; }
+};
+
+/// A direction chosen by a material. `weight` is f * cos / pdf (or the
+/// specular throughput); `pdf` is the solid-angle density (0 for specular).
+struct BsdfSample {
+    Vec3 wi;
+    Vec3 weight;
+    double pdf = 0;
+    bool specular = false;
+};
+
+/// f(wo, wi) * cos(wi) for the non-specular materials; `base` is the
+/// albedo texture's value at the hit.
+Vec3 bsdf_eval(const Material& m, const Vec3& base, const Vec3& wo, const Vec3& wi);
+
+/// The solid-angle density `bsdf_sample` picks wi with.
+double bsdf_pdf(const Material& m, const Vec3& base, const Vec3& wo, const Vec3& wi);
+
+/// Sample an incoming direction from three uniform numbers. `entering` says
+/// whether wo is on the outside of a glass surface. False if the path ends.
+bool bsdf_sample(const Material& m, const Vec3& base, const Vec3& wo, bool entering,
+                 double u0, double u1, double u2, BsdfSample& out);
+
+/// The reflectance the albedo AOV reports at a non-specular hit.
+Vec3 surface_albedo(const Material& m, const Vec3& base);
+
+}  // namespace testrender

@@ -1,0 +1,68 @@
+// scene.cpp: object storage, brute-force nearest-hit and shadow queries
+// (the scenes have tens of objects) and area-proportional light sampling.
+#include "scene.h"
+
+#include <algorithm>
+
+namespace testrender {
+
+int Scene::add_material(const Material& m)
+{
+    materials.push_back(m);
+    return int(materials.size()) - 1;
+}
+
+int Scene::add(const Shape& shape, int material, int id)
+{
+    objects.push_back({ shape, material, id });
+    const int index = int(objects.size()) - 1;
+    if (materials[size_t(material)].kind == MaterialKind::emitter && shape.kind == ShapeKind::quad) {
+        lights_.push_back(index);
+        total_light_area_ += shape.quad_area;
+        light_cdf_.push_back(total_light_area_);
+    }
+    return index;
+}
+
+bool Scene::intersect(const Ray& ray, Hit& hit, double t_max) const
+{
+    bool found = false;
+    double closest = t_max;
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (objects[i].shape.intersect(ray, ray_epsilon, closest, hit)) {
+            closest = hit.t;
+            hit.object = int(i);
+            found = true;
+        }
+    }
+    return found;
+}
+
+bool Scene::occluded(const Ray& ray, double t_max) const
+{
+    Hit scratch;
+    for (const Object& o : objects)
+        if (o.shape.intersect(ray, ray_epsilon, t_max, scratch))
+            return true;
+    return false;
+}
+
+LightSample Scene::sample_light(double u0, double u1, double u2) const
+{
+    LightSample s;
+    if (lights_.empty())
+        return s;
+    const double target = u0 * total_light_area_;
+    const size_t k = std::min(size_t(std::upper_bound(light_cdf_.begin(), light_cdf_.end(), target)
+                                     - light_cdf_.begin()),
+                              lights_.size() - 1);
+    const Object& light = objects[size_t(lights_[k])];
+    const Shape& q = light.shape;
+    s.position = q.corner + q.edge_u * u1 + q.edge_v * u2;
+    s.normal = q.quad_normal;
+    s.radiance = materials[size_t(light.material)].emission;
+    s.pdf_area = 1.0 / total_light_area_;
+    return s;
+}
+
+}  // namespace testrender

@@ -1,0 +1,226 @@
+// scenes.cpp: the built-in scenes. Each exercises something a denoiser must
+// handle: cornell (diffuse, mirror and glossy objects, direct light),
+// mirrors (reflections of distinct objects), textured (high-frequency
+// albedo), dof (defocus over depth), interior (mostly indirect light).
+#include "scene.h"
+
+namespace testrender {
+
+namespace {
+
+/// A quad with corner `c` and edges `u`, `v`, oriented so that its normal
+/// points along `facing` (the edges are swapped if needed).
+Shape facing_quad(const Vec3& c, const Vec3& u, const Vec3& v, const Vec3& facing)
+{
+    if (dot(cross(u, v), facing) < 0)
+        return Shape::quad(c, v, u);
+    return Shape::quad(c, u, v);
+}
+
+/// The inside of the axis-aligned box [lo, hi] as five or six walls facing
+/// inwards, ids first_id, first_id+1, ... in the order floor, ceiling,
+/// back (-z), left (-x), right (+x) and, if `closed`, front (+z).
+void add_room(Scene& s, const Vec3& lo, const Vec3& hi, int floor_m, int ceiling_m, int back_m,
+              int left_m, int right_m, int front_m, int first_id, bool closed)
+{
+    const Vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
+    s.add(facing_quad(lo, dx, dz, { 0, 1, 0 }), floor_m, first_id + 0);
+    s.add(facing_quad(Vec3(lo.x, hi.y, lo.z), dx, dz, { 0, -1, 0 }), ceiling_m, first_id + 1);
+    s.add(facing_quad(lo, dx, dy, { 0, 0, 1 }), back_m, first_id + 2);
+    s.add(facing_quad(lo, dy, dz, { 1, 0, 0 }), left_m, first_id + 3);
+    s.add(facing_quad(Vec3(hi.x, lo.y, lo.z), dy, dz, { -1, 0, 0 }), right_m, first_id + 4);
+    if (closed)
+        s.add(facing_quad(Vec3(lo.x, lo.y, hi.z), dx, dy, { 0, 0, -1 }), front_m, first_id + 5);
+}
+
+/// A horizontal area light facing down (or up) centered at `c`.
+void add_panel_light(Scene& s, const Vec3& c, double half_x, double half_z, int material,
+                     int id, bool facing_up = false)
+{
+    s.add(facing_quad(Vec3(c.x - half_x, c.y, c.z - half_z), Vec3(2 * half_x, 0, 0),
+                      Vec3(0, 0, 2 * half_z), Vec3(0, facing_up ? 1 : -1, 0)),
+          material, id);
+}
+
+void cornell(Scene& s)
+{
+    s.description = "Cornell box: diffuse walls, a diffuse sphere, a mirror sphere, a glossy box";
+    const int white = s.add_material(Material::diffuse(Texture::constant({ 0.73, 0.73, 0.73 })));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.65, 0.05, 0.05 })));
+    const int green = s.add_material(Material::diffuse(Texture::constant({ 0.12, 0.45, 0.15 })));
+    const int light = s.add_material(Material::emitter({ 17, 12, 4 }));
+    const int matte = s.add_material(Material::diffuse(Texture::constant({ 0.8, 0.75, 0.6 })));
+    const int mirror = s.add_material(Material::mirror({ 0.95, 0.95, 0.95 }));
+    const int glossy = s.add_material(
+        Material::glossy(Texture::constant({ 0.15, 0.2, 0.45 }), { 0.35, 0.35, 0.35 }, 0.12));
+    // ids: floor 1, ceiling 2, back 3, left 4, right 5
+    add_room(s, { -1, 0, -1 }, { 1, 2, 1 }, white, white, white, red, green, white, 1, false);
+    add_panel_light(s, { 0, 1.999, 0 }, 0.3, 0.3, light, 6);
+    s.add(Shape::sphere({ -0.45, 0.3, 0.45 }, 0.3), matte, 7);
+    s.add(Shape::sphere({ 0.45, 0.35, 0.25 }, 0.35), mirror, 8);
+    s.add(Shape::box({ -0.45, 0.6, -0.35 }, { 0.28, 0.6, 0.28 }, 18), glossy, 9);
+    s.camera.eye = { 0, 1, 3.9 };
+    s.camera.look_at = { 0, 1, 0 };
+    s.camera.vfov_degrees = 40;
+    s.max_depth = 8;
+}
+
+void mirrors(Scene& s)
+{
+    s.description = "closed room with a mirror sphere and three flat mirrors, each reflecting "
+                    "different objects";
+    const int grey = s.add_material(Material::diffuse(Texture::constant({ 0.6, 0.6, 0.6 })));
+    const int warm = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.6, 0.3 })));
+    const int cool = s.add_material(Material::diffuse(Texture::constant({ 0.35, 0.5, 0.7 })));
+    const int light = s.add_material(Material::emitter({ 9, 9, 8 }));
+    const int mirror = s.add_material(Material::mirror({ 0.95, 0.95, 0.95 }));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.8, 0.1, 0.08 })));
+    const int blue = s.add_material(Material::diffuse(Texture::constant({ 0.1, 0.15, 0.8 })));
+    const int checker = s.add_material(
+        Material::diffuse(Texture::checker({ 0.9, 0.9, 0.9 }, { 0.1, 0.5, 0.1 }, 6)));
+    const int noise = s.add_material(
+        Material::diffuse(Texture::noise({ 0.9, 0.8, 0.1 }, { 0.4, 0.1, 0.4 }, 6)));
+    // ids: floor 1, ceiling 2, back 3, left 4, right 5, front (behind the camera) 6
+    add_room(s, { -2, 0, -2 }, { 2, 2.5, 2.2 }, grey, grey, grey, cool, cool, warm, 1, true);
+    add_panel_light(s, { 0, 2.499, 0 }, 0.6, 0.6, light, 7);
+    s.add(Shape::sphere({ 0, 0.5, -0.6 }, 0.5), mirror, 10);
+    // flat mirrors: on the left and right walls turned towards the room's
+    // middle, and one on the back wall
+    s.add(facing_quad({ -1.95, 0.2, -1.7 }, { 0.35, 0, 1.3 }, { 0, 1.5, 0 }, { 1, 0, 0 }), mirror, 11);
+    s.add(facing_quad({ 1.95, 0.2, -1.7 }, { -0.35, 0, 1.3 }, { 0, 1.5, 0 }, { -1, 0, 0 }), mirror,
+          12);
+    s.add(facing_quad({ -0.9, 1.15, -1.98 }, { 1.8, 0, 0 }, { 0, 1.0, 0 }, { 0, 0, 1 }), mirror, 13);
+    s.add(Shape::sphere({ -1.1, 0.35, 0.4 }, 0.35), red, 20);
+    s.add(Shape::box({ 1.15, 0.35, 0.3 }, { 0.3, 0.35, 0.3 }, 30), blue, 21);
+    s.add(Shape::sphere({ 1.0, 0.3, -1.3 }, 0.3), checker, 22);
+    s.add(Shape::sphere({ -1.0, 0.3, -1.3 }, 0.3), noise, 23);
+    s.camera.eye = { 0, 1.2, 1.8 };
+    s.camera.look_at = { 0, 0.7, -1 };
+    s.camera.vfov_degrees = 60;
+    s.max_depth = 8;
+}
+
+void textured(Scene& s)
+{
+    s.description = "high-frequency checker floor and noise- and checker-textured objects "
+                    "under a sky";
+    const int floor = s.add_material(
+        Material::diffuse(Texture::checker({ 0.85, 0.85, 0.8 }, { 0.08, 0.08, 0.1 }, 8)));
+    const int noise = s.add_material(
+        Material::diffuse(Texture::noise({ 0.05, 0.2, 0.6 }, { 0.95, 0.85, 0.3 }, 14)));
+    const int fine = s.add_material(
+        Material::diffuse(Texture::checker({ 0.9, 0.1, 0.1 }, { 0.95, 0.95, 0.95 }, 20)));
+    const int boxtex = s.add_material(
+        Material::diffuse(Texture::noise({ 0.2, 0.5, 0.1 }, { 0.9, 0.9, 0.7 }, 25)));
+    const int glossy = s.add_material(Material::glossy(
+        Texture::checker({ 0.5, 0.3, 0.1 }, { 0.1, 0.05, 0.02 }, 16), { 0.2, 0.2, 0.2 }, 0.2));
+    const int light = s.add_material(Material::emitter({ 12, 11, 10 }));
+    s.add(facing_quad({ -10, 0, -10 }, { 20, 0, 0 }, { 0, 0, 20 }, { 0, 1, 0 }), floor, 1);
+    add_panel_light(s, { 1.5, 4, 1.5 }, 1.0, 1.0, light, 2);
+    s.add(Shape::sphere({ -0.9, 0.5, 0 }, 0.5), noise, 3);
+    s.add(Shape::sphere({ 0.5, 0.35, 0.8 }, 0.35), fine, 4);
+    s.add(Shape::box({ 0.7, 0.45, -0.6 }, { 0.45, 0.45, 0.45 }, 35), boxtex, 5);
+    s.add(Shape::sphere({ -0.2, 0.25, 1.3 }, 0.25), glossy, 6);
+    s.background = { 0.35, 0.45, 0.6 };
+    s.camera.eye = { 0, 1.3, 3.8 };
+    s.camera.look_at = { 0, 0.3, 0 };
+    s.camera.vfov_degrees = 40;
+    s.max_depth = 6;
+}
+
+void dof(Scene& s)
+{
+    s.description = "spheres spread from near to far on a checker floor, thin lens focused on "
+                    "the middle one";
+    const int floor = s.add_material(
+        Material::diffuse(Texture::checker({ 0.8, 0.8, 0.8 }, { 0.15, 0.15, 0.2 }, 2)));
+    const int light = s.add_material(Material::emitter({ 10, 10, 9 }));
+    const Vec3 colours[] = { { 0.8, 0.1, 0.1 }, { 0.9, 0.6, 0.1 }, { 0.2, 0.7, 0.2 },
+                             { 0.1, 0.5, 0.8 }, { 0.5, 0.2, 0.8 }, { 0.8, 0.8, 0.8 } };
+    s.add(facing_quad({ -20, 0, -30 }, { 40, 0, 0 }, { 0, 0, 40 }, { 0, 1, 0 }), floor, 1);
+    add_panel_light(s, { -2, 6, 0 }, 2, 4, light, 2);
+    for (int i = 0; i < 6; ++i) {
+        const Texture t = i % 2 ? Texture::checker(colours[i], colours[i] * 0.3, 5)
+                                : Texture::constant(colours[i]);
+        const int m = s.add_material(Material::diffuse(t));
+        const double z = 2.0 - 2.2 * i;
+        const double x = (i % 2 ? 0.7 : -0.7) + 0.1 * i;
+        s.add(Shape::sphere({ x, 0.5, z }, 0.5), m, 10 + i);
+    }
+    s.background = { 0.3, 0.35, 0.45 };
+    s.camera.eye = { 0, 1.0, 5.5 };
+    s.camera.look_at = { 0, 0.5, -2 };
+    s.camera.vfov_degrees = 35;
+    s.camera.aperture_radius = 0.3;
+    // focus on the third sphere (z = -2.4)
+    s.camera.focus_distance = dot(Vec3(-0.5, 0.5, -2.4) - s.camera.eye,
+                                  normalize(s.camera.look_at - s.camera.eye));
+    s.max_depth = 6;
+}
+
+void interior(Scene& s)
+{
+    s.description = "room lit by an uplight against the ceiling: almost all light is indirect";
+    const int wall = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.72, 0.65 })));
+    const int floor = s.add_material(
+        Material::diffuse(Texture::noise({ 0.35, 0.2, 0.1 }, { 0.6, 0.4, 0.2 }, 3)));
+    const int ceiling = s.add_material(Material::diffuse(Texture::constant({ 0.85, 0.85, 0.85 })));
+    const int accent = s.add_material(Material::diffuse(Texture::constant({ 0.2, 0.35, 0.6 })));
+    const int light = s.add_material(Material::emitter({ 120, 100, 70 }));
+    const int dark = s.add_material(Material::diffuse(Texture::constant({ 0.1, 0.1, 0.1 })));
+    const int wood = s.add_material(Material::glossy(
+        Texture::noise({ 0.3, 0.15, 0.05 }, { 0.5, 0.3, 0.12 }, 8), { 0.05, 0.05, 0.05 }, 0.25));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.7, 0.15, 0.1 })));
+    const int mirror = s.add_material(Material::mirror({ 0.9, 0.9, 0.9 }));
+    // ids: floor 1, ceiling 2, back 3, left 4, right 5, front 6
+    add_room(s, { -2.5, 0, -2.5 }, { 2.5, 2.6, 2.5 }, floor, ceiling, wall, accent, wall, wall, 1,
+             true);
+    // uplight: a shade (box) with the emitter on top, facing the ceiling
+    s.add(Shape::box({ -1.8, 0.9, -1.8 }, { 0.25, 0.9, 0.25 }, 0), dark, 7);
+    add_panel_light(s, { -1.8, 1.801, -1.8 }, 0.22, 0.22, light, 8, true);
+    // table and objects on it
+    s.add(Shape::box({ 0.3, 0.7, -0.6 }, { 0.8, 0.04, 0.5 }, 10), wood, 9);
+    s.add(Shape::box({ 0.3, 0.33, -0.6 }, { 0.06, 0.33, 0.06 }, 10), wood, 10);
+    s.add(Shape::sphere({ 0.0, 0.94, -0.6 }, 0.2), red, 11);
+    s.add(Shape::sphere({ 0.7, 0.89, -0.4 }, 0.15), mirror, 12);
+    s.add(Shape::box({ 1.6, 0.45, 0.6 }, { 0.4, 0.45, 0.4 }, -25), accent, 13);
+    s.camera.eye = { 1.2, 1.5, 2.3 };
+    s.camera.look_at = { -0.4, 0.8, -1.2 };
+    s.camera.vfov_degrees = 55;
+    s.max_depth = 10;
+    s.roulette_depth = 4;
+}
+
+struct Entry {
+    const char* name;
+    void (*build)(Scene&);
+};
+
+const Entry scenes[] = { { "cornell", cornell },   { "mirrors", mirrors },
+                         { "textured", textured }, { "dof", dof },
+                         { "interior", interior } };
+
+}  // namespace
+
+std::vector<std::string> scene_names()
+{
+    std::vector<std::string> names;
+    for (const Entry& e : scenes)
+        names.emplace_back(e.name);
+    return names;
+}
+
+bool make_scene(const std::string& name, Scene& scene)
+{
+    for (const Entry& e : scenes) {
+        if (name == e.name) {
+            scene = Scene();
+            scene.name = e.name;
+            e.build(scene);
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace testrender
