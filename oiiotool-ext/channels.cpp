@@ -1,0 +1,179 @@
+// channels.cpp: channel-name parsing, beauty and guide discovery, and
+// channel extraction.
+#include "channels.h"
+
+#include "error.h"
+
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/strutil.h>
+
+#include <algorithm>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+namespace Strutil = OIIO::Strutil;
+
+namespace {
+
+/// Bare channel names that belong to the beauty pass, not a pass of their own.
+const std::vector<std::string> bare_beauty = { "R", "G", "B", "A", "Y" };
+/// Pass names that hold the beauty, preferred first (after bare R,G,B).
+const std::vector<std::string> beauty_passes = { "Combined", "rgba", "beauty", "color" };
+/// The alpha component, kept out of the default beauty (it passes through).
+const std::string alpha = "A";
+
+/// A channel name taken apart: "<layer>.<pass>.<component>".
+struct ChannelName {
+    std::string layer;
+    std::string pass;
+    std::string component;
+};
+
+/// Splits a channel name. "R" -> ("", "", "R"); "Z" -> ("", "Z", "Z");
+/// "N.X" -> ("", "N", "X"); "ViewLayer.Denoising Normal.X" ->
+/// ("ViewLayer", "Denoising Normal", "X").
+ChannelName split_name(const std::string& name)
+{
+    size_t dot = name.rfind('.');
+    if (dot == std::string::npos) {
+        bool beauty = std::find(bare_beauty.begin(), bare_beauty.end(), name) != bare_beauty.end();
+        return { "", beauty ? "" : name, name };
+    }
+    std::string rest = name.substr(0, dot);
+    std::string component = name.substr(dot + 1);
+    size_t dot2 = rest.rfind('.');
+    if (dot2 == std::string::npos)
+        return { "", rest, component };
+    return { rest.substr(0, dot2), rest.substr(dot2 + 1), component };
+}
+
+/// Indices of the channels of pass `pass` in view layer `layer` (pass name
+/// compared without case), in file order.
+std::vector<int> pass_channels(const ImageSpec& spec, const std::string& layer, const std::string& pass)
+{
+    std::vector<int> indices;
+    for (int c = 0; c < spec.nchannels; ++c) {
+        ChannelName name = split_name(spec.channel_name(c));
+        if (name.layer == layer && Strutil::iequals(name.pass, pass))
+            indices.push_back(c);
+    }
+    return indices;
+}
+
+/// `indices` without the alpha channel, unless that would leave nothing.
+std::vector<int> without_alpha(const ImageSpec& spec, const std::vector<int>& indices)
+{
+    std::vector<int> kept;
+    for (int c : indices)
+        if (split_name(spec.channel_name(c)).component != alpha)
+            kept.push_back(c);
+    return kept.empty() ? indices : kept;
+}
+
+/// The default beauty: bare R,G,B (or Y), else the first Combined-like pass.
+std::vector<int> find_beauty(const ImageSpec& spec)
+{
+    std::vector<int> bare = pass_channels(spec, "", "");
+    if (!bare.empty())
+        return without_alpha(spec, bare);
+    for (const std::string& pass : beauty_passes)
+        for (int c = 0; c < spec.nchannels; ++c) {
+            ChannelName name = split_name(spec.channel_name(c));
+            if (Strutil::iequals(name.pass, pass))
+                return without_alpha(spec, pass_channels(spec, name.layer, name.pass));
+        }
+    return {};
+}
+
+/// The channels of `candidate` whose components match the beauty's, in the
+/// beauty's order (for half_a / half_b); empty if any is missing.
+std::vector<int> matching_components(const ImageSpec& spec, const std::vector<int>& candidate,
+                                     const std::vector<int>& beauty)
+{
+    std::vector<int> matched;
+    for (int b : beauty) {
+        std::string want = split_name(spec.channel_name(b)).component;
+        auto it = std::find_if(candidate.begin(), candidate.end(), [&](int c) {
+            return split_name(spec.channel_name(c)).component == want;
+        });
+        if (it == candidate.end())
+            return {};
+        matched.push_back(*it);
+    }
+    return matched;
+}
+
+}  // namespace
+
+std::string channel_names(const ImageSpec& spec, const std::vector<int>& indices)
+{
+    std::vector<std::string> names;
+    for (int c : indices)
+        names.push_back(spec.channel_name(c));
+    return Strutil::join(names, ",");
+}
+
+std::string all_channel_names(const ImageSpec& spec)
+{
+    std::vector<int> all(size_t(std::max(spec.nchannels, 0)));
+    for (size_t c = 0; c < all.size(); ++c)
+        all[c] = int(c);
+    return channel_names(spec, all);
+}
+
+std::vector<int> select_channels(const ImageSpec& spec, std::string_view selector, std::string_view file,
+                                 std::string_view context)
+{
+    std::vector<int> indices;
+    for (const std::string& token : Strutil::splits(selector, ",")) {
+        int exact = spec.channelindex(token);
+        if (exact >= 0) {
+            indices.push_back(exact);
+            continue;
+        }
+        size_t before = indices.size();
+        for (int c = 0; c < spec.nchannels; ++c)
+            if (Strutil::starts_with(spec.channel_name(c), token + "."))
+                indices.push_back(c);
+        if (indices.size() == before)
+            throw RunError(format("{} : no channel or layer '{}' in {} (channels: {})", context, token,
+                                  file, all_channel_names(spec)));
+    }
+    if (indices.empty())
+        throw RunError(format("{} : no channels named in '{}'", context, selector));
+    return indices;
+}
+
+Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selector, std::string_view file)
+{
+    Discovery found;
+    found.beauty = beauty_selector.empty() ? find_beauty(spec)
+                                           : select_channels(spec, beauty_selector, file, "--beauty");
+    if (found.beauty.empty())
+        throw RunError(format("no beauty channels found in {} (channels: {}); name them with --beauty CHANNELS",
+                              file, all_channel_names(spec)));
+    found.layer = split_name(spec.channel_name(found.beauty.front())).layer;
+    for (const RoleInfo& info : role_table()) {
+        for (const char* pass : info.pass_names) {
+            std::vector<int> indices = pass_channels(spec, found.layer, pass);
+            if (info.like_beauty)
+                indices = matching_components(spec, indices, found.beauty);
+            if (!indices.empty() && channel_count_ok(info, int(indices.size()), int(found.beauty.size()))) {
+                found.roles[info.role] = indices;
+                break;
+            }
+        }
+    }
+    return found;
+}
+
+ImageBuf extract_channels(const ImageBuf& src, const std::vector<int>& indices)
+{
+    ImageBuf out;
+    if (!OIIO::ImageBufAlgo::channels(out, src, int(indices.size()), indices))
+        throw RunError(format("cannot extract channels: {}", one_line(out.geterror())));
+    return out;
+}
+
+}  // namespace mcdtool

@@ -1,0 +1,50 @@
+// channels.h: finding the beauty and the guides among an image's channels:
+// testrender's names (R,G,B, albedo.R, N.X, Z, id, reflid, var.R, A.R, B.R),
+// Blender Cycles multilayer EXR (<ViewLayer>.Combined.R, .IndexOB.X,
+// .Normal.X, .Depth.Z, .Denoising Albedo.R, ...) and explicit selectors (a
+// comma list of channel names or a layer prefix).
+#pragma once
+
+#include "roles.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mcdtool {
+
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+
+/// What discovery found in one image's channel list.
+struct Discovery {
+    std::vector<int> beauty;                 ///< channel indices to filter
+    std::string layer;                       ///< the beauty's view layer ("" if none)
+    std::map<Role, std::vector<int>> roles;  ///< guides found beside it
+};
+
+/// Channel indices chosen by `selector` in `spec`: a comma list of channel
+/// names, each one exact or a layer prefix ("N" selects N.X,N.Y,N.Z), in the
+/// order given. Throws RunError naming `file` and listing its channels.
+std::vector<int> select_channels(const ImageSpec& spec, std::string_view selector,
+                                 std::string_view file, std::string_view context);
+
+/// Finds the beauty (or takes `beauty_selector` if not empty) and every
+/// guide role in the beauty's view layer. Throws RunError if there is no
+/// beauty.
+Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selector,
+                            std::string_view file);
+
+/// A float image holding channels `indices` of `src`, in that order.
+ImageBuf extract_channels(const ImageBuf& src, const std::vector<int>& indices);
+
+/// "N.X,N.Y,N.Z": the names of `indices`.
+std::string channel_names(const ImageSpec& spec, const std::vector<int>& indices);
+
+/// "R,G,B,...": every channel of `spec`, for error messages.
+std::string all_channel_names(const ImageSpec& spec);
+
+}  // namespace mcdtool

@@ -1,0 +1,75 @@
+// commands.h: the command table. A command is data: its name, parameters,
+// help, the guide roles it needs, an example, and a function that makes
+// exactly one library call. Parsing, --help, docs/mcdtool.md and the runner
+// all read this table; adding a filter is adding one row.
+#pragma once
+
+#include "roles.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mcdtool {
+
+using OIIO::ImageBuf;
+
+/// The kind of value a command parameter takes.
+enum class ParamType { integer, number };
+
+/// One positional parameter of a command.
+struct Param {
+    const char* name;   ///< shown in usage, e.g. "SIZE"
+    ParamType type;
+    const char* help;
+};
+
+/// Guide images by role, each with a note saying where it came from.
+struct Guides {
+    std::map<Role, ImageBuf> images;
+    std::map<Role, std::string> sources;  ///< "render.exr: N.X,N.Y,N.Z"
+};
+
+/// What a command's library call receives.
+struct Call {
+    ImageBuf& dst;
+    const ImageBuf& beauty;
+    const Guides& guides;
+    const std::vector<std::string>& values;  ///< validated against the Params
+    int nthreads;
+
+    /// Parameter `i` as an int (validated at parse time).
+    int integer(size_t i) const;
+    /// Parameter `i` as a float (validated at parse time).
+    float number(size_t i) const;
+    /// The guide for `role` (the runner checks presence before calling).
+    const ImageBuf& guide(Role role) const;
+};
+
+/// A library call with the driver's calling convention.
+using CallFn = bool (*)(const Call&);
+
+/// One row of the command table.
+struct Command {
+    const char* name;              ///< typed as --name (dashes, not underscores)
+    const char* header;            ///< the library header that declares it
+    std::vector<Param> params;
+    std::vector<Role> roles;       ///< guides it needs, in argument order
+    const char* help;
+    const char* example;           ///< a full mcdtool command line
+    CallFn call;
+};
+
+/// Every command, in help order.
+const std::vector<Command>& command_table();
+
+/// The command typed as `--name` (without dashes), or nullptr.
+const Command* find_command(std::string_view name);
+
+/// "--median SIZE": how a command is typed.
+std::string command_usage(const Command& command);
+
+}  // namespace mcdtool

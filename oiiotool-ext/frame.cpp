@@ -1,0 +1,148 @@
+// frame.cpp: the per-frame runner shared by every command: reading,
+// timing, error forwarding ("--median : <library message>") and writing.
+#include "frame.h"
+
+#include "channels.h"
+#include "error.h"
+#include "frames.h"
+#include "guides.h"
+#include "input.h"
+#include "output.h"
+#include "preview.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/strutil.h>
+
+#include <cstdio>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+
+namespace {
+
+/// The dst attribute in which the library counts windows with no finite value.
+const char* const empty_windows_attribute = "mcdenoise:empty_windows";
+
+/// Every file this frame reads, for the overwrite check.
+std::vector<std::string> input_paths(const Options& options, const PathForFrame& path_of)
+{
+    std::vector<std::string> paths = { path_of(options.input) };
+    for (const AovRequest& aov : options.aovs)
+        paths.push_back(path_of(aov.file));
+    if (!options.compare.empty())
+        paths.push_back(path_of(options.compare));
+    return paths;
+}
+
+/// Every file this frame writes, with the option that names it.
+std::vector<std::pair<std::string, std::string>> output_paths(const Options& options, const PathForFrame& path_of)
+{
+    std::vector<std::pair<std::string, std::string>> paths;
+    for (const Step& step : options.steps)
+        if (!step.command)
+            paths.emplace_back("-o", path_of(step.output));
+    if (!options.preview.empty())
+        paths.emplace_back("--preview", path_of(options.preview));
+    return paths;
+}
+
+/// Throws unless no output would replace an input (or --force is given).
+void refuse_overwriting_inputs(const Options& options, const PathForFrame& path_of)
+{
+    if (options.force)
+        return;
+    for (const auto& [option, output] : output_paths(options, path_of))
+        for (const std::string& input : input_paths(options, path_of))
+            if (same_file(output, input))
+                throw RunError(format("{} : '{}' is an input of this run; add --force to replace it", option,
+                                      output));
+}
+
+/// True if --skip-existing applies: every output of the frame exists.
+bool all_outputs_exist(const Options& options, const PathForFrame& path_of)
+{
+    auto outputs = output_paths(options, path_of);
+    if (outputs.empty())
+        return false;
+    for (const auto& output : outputs)
+        if (!OIIO::Filesystem::exists(output.second))
+            return false;
+    return true;
+}
+
+/// With -v: which channels went to the beauty and to each guide role.
+void report_channels(const std::string& input_path, const ImageBuf& input, const Discovery& found,
+                     const Guides& guides)
+{
+    std::printf("mcdtool: %-8s <- %s: %s\n", "beauty", input_path.c_str(),
+                channel_names(input.spec(), found.beauty).c_str());
+    for (const RoleInfo& info : role_table()) {
+        auto source = guides.sources.find(info.role);
+        if (source != guides.sources.end())
+            std::printf("mcdtool: %-8s <- %s\n", info.name, source->second.c_str());
+    }
+}
+
+/// Runs one command: exactly one library call, timed, errors forwarded.
+ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, const Options& options,
+                     RunStats& stats)
+{
+    const Command& command = *step.command;
+    std::string name = dashed(command.name);
+    ImageBuf dst;
+    Call call{ dst, current, guides, step.values, options.threads };
+    Timer timer;
+    bool ok = command.call(call);
+    double seconds = timer.seconds();
+    stats.add_command(name, seconds);
+    if (!ok || dst.has_error())
+        throw RunError(format("{} : {}", name, one_line(dst.geterror())));
+    int empty = dst.spec().get_int_attribute(empty_windows_attribute, 0);
+    if (empty > 0)
+        std::fprintf(stderr, "mcdtool WARNING: %s : %d window(s) held no finite value and were set to 0\n",
+                     name.c_str(), empty);
+    if (options.verbose)
+        std::printf("mcdtool: %s %s  %.3f s\n", name.c_str(), OIIO::Strutil::join(step.values, " ").c_str(),
+                    seconds);
+    return dst;
+}
+
+}  // namespace
+
+FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStats& stats)
+{
+    PathForFrame path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
+    if (options.skip_existing && all_outputs_exist(options, path_of))
+        return FrameOutcome::skipped;
+    refuse_overwriting_inputs(options, path_of);
+
+    std::string input_path = path_of(options.input);
+    ImageFiles files(stats);
+    const ImageBuf& input = files.get(input_path, "input");
+    Discovery found = discover_channels(input.spec(), options.beauty_channels, input_path);
+    Guides guides = load_guides(input, input_path, found, options, path_of, files);
+    if (options.verbose)
+        report_channels(input_path, input, found, guides);
+
+    ImageBuf before = extract_channels(input, found.beauty);
+    ImageBuf current = before;
+    OutputBatch batch(stats);
+    for (const Step& step : options.steps) {
+        if (step.command) {
+            require_guides(*step.command, guides, input_path, input.spec(), found);
+            current = run_command(step, current, guides, options, stats);
+            continue;
+        }
+        std::string path = path_of(step.output);
+        batch.write(path, output_spec(input, options), merge_result(input, found.beauty, current), "-o");
+        if (options.verbose)
+            std::printf("mcdtool: -o %s\n", path.c_str());
+    }
+    if (!options.preview.empty())
+        write_preview(path_of(options.preview), before, current, nullptr, options, batch);
+    batch.commit();
+    return FrameOutcome::written;
+}
+
+}  // namespace mcdtool

@@ -1,0 +1,93 @@
+// guides.cpp: guide assembly, channel-count and coverage checks.
+#include "guides.h"
+
+#include "error.h"
+#include "output.h"
+
+#include <OpenImageIO/strutil.h>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+
+namespace {
+
+/// "x [0,64) y [0,48)": a data window for messages.
+std::string window_text(const OIIO::ROI& roi)
+{
+    return format("x [{},{}) y [{},{})", roi.xbegin, roi.xend, roi.ybegin, roi.yend);
+}
+
+/// Throws unless `nchannels` suits `info`.
+void require_channel_count(const RoleInfo& info, int nchannels, int beauty_channels,
+                           const std::string& channels, const std::string& context)
+{
+    if (channel_count_ok(info, nchannels, beauty_channels))
+        return;
+    std::string need = info.like_beauty ? format("{} (like the beauty)", beauty_channels)
+                                        : channel_count_text(info);
+    throw RunError(format("{} : the {} guide needs {} channel(s), got {} ({}); pick them with :CHANNELS",
+                          context, info.name, need, nchannels, channels));
+}
+
+}  // namespace
+
+void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::string& context)
+{
+    OIIO::ROI g = guide.roi();
+    OIIO::ROI b = beauty.roi();
+    if (g.xbegin <= b.xbegin && g.ybegin <= b.ybegin && g.xend >= b.xend && g.yend >= b.yend)
+        return;
+    throw RunError(format("{} : data window {} does not cover the beauty's data window {}", context,
+                          window_text(g), window_text(b)));
+}
+
+Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
+                   const Options& options, const PathForFrame& frame_path_of, ImageFiles& files)
+{
+    Guides guides;
+    int beauty_channels = int(found.beauty.size());
+    for (const auto& [role, indices] : found.roles) {
+        guides.images[role] = extract_channels(input, indices);
+        guides.sources[role] = format("{}: {}", input_path, channel_names(input.spec(), indices));
+    }
+    for (const AovRequest& aov : options.aovs) {
+        const RoleInfo& info = role_info(aov.role);
+        std::string context = "--aov " + aov.typed;
+        std::string path = frame_path_of(aov.file);
+        const ImageBuf& file = same_file(path, input_path) ? input : files.get(path, context);
+        std::vector<int> indices;
+        if (aov.channels.empty()) {
+            for (int c = 0; c < file.nchannels(); ++c)
+                indices.push_back(c);
+        } else {
+            indices = select_channels(file.spec(), aov.channels, path, context);
+        }
+        require_channel_count(info, int(indices.size()), beauty_channels, channel_names(file.spec(), indices),
+                              context);
+        ImageBuf guide = extract_channels(file, indices);
+        require_coverage(guide, input, context);
+        guides.images[aov.role] = std::move(guide);
+        guides.sources[aov.role] = format("{}: {}", path, channel_names(file.spec(), indices));
+    }
+    return guides;
+}
+
+void require_guides(const Command& command, const Guides& guides, const std::string& input_path,
+                    const ImageSpec& input_spec, const Discovery& found)
+{
+    for (Role role : command.roles) {
+        if (guides.images.count(role))
+            continue;
+        const RoleInfo& info = role_info(role);
+        std::vector<std::string> looked;
+        for (const char* pass : info.pass_names)
+            looked.push_back(found.layer.empty() ? pass : found.layer + "." + pass);
+        throw RunError(format("--{} : needs the {} guide ({}); {} has none of {} (channels: {}); "
+                              "give --aov {}=FILE[:CHANNELS]",
+                              command.name, info.name, info.what, input_path, OIIO::Strutil::join(looked, ", "),
+                              all_channel_names(input_spec), info.name));
+    }
+}
+
+}  // namespace mcdtool

@@ -1,0 +1,193 @@
+// help.cpp: help text and the Markdown reference, generated from the
+// tables so that they cannot drift from what the parser accepts.
+#include "help.h"
+
+#include "commands.h"
+#include "options.h"
+#include "roles.h"
+
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
+
+#include <vector>
+
+#ifndef MCD_VERSION
+#    define MCD_VERSION "unknown"
+#endif
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+
+namespace {
+
+/// Width of the name column in the terminal help.
+constexpr size_t name_column = 26;
+/// Width of the terminal help.
+constexpr size_t help_width = 92;
+
+/// Help sections of the option table, in order.
+const std::vector<std::string> option_groups = { "Output", "Guides", "Sequences", "Diagnostics", "Help" };
+
+/// The one-line purpose shown at the top of both forms of help.
+const char* const summary = "mcdtool: remove Monte Carlo noise from renders, oiiotool style.";
+
+/// The exit codes and error format, shown in both forms of help.
+const char* const exit_codes =
+    "Errors print one line `mcdtool ERROR: <command or file> : <reason>` on stderr. Exit status: 0 "
+    "success; 1 a file could not be read, filtered or written (for a sequence: any frame failed; the "
+    "other frames are still written); 2 a usage error (unknown command, missing or malformed "
+    "argument), reported before anything is read. A failed frame leaves no output file behind.";
+
+/// `text` word-wrapped to `width`, every line after the first indented by `indent`.
+std::string wrap(const std::string& text, size_t indent, size_t width)
+{
+    std::string out;
+    size_t column = indent;
+    for (const std::string& word : OIIO::Strutil::splits(text, " ")) {
+        if (column > indent && column + 1 + word.size() > width) {
+            out += "\n" + std::string(indent, ' ');
+            column = indent;
+        } else if (column > indent) {
+            out += " ";
+            ++column;
+        }
+        out += word;
+        column += word.size();
+    }
+    return out;
+}
+
+/// "  name ... help" with the help wrapped in the second column.
+std::string help_row(const std::string& name, const std::string& help)
+{
+    std::string row = "  " + name;
+    row += row.size() + 1 < name_column ? std::string(name_column - row.size(), ' ')
+                                        : "\n" + std::string(name_column, ' ');
+    return row + wrap(help, name_column, help_width) + "\n";
+}
+
+/// "id, normal": the roles a command needs, or "-".
+std::string roles_text(const Command& command)
+{
+    std::vector<std::string> names;
+    for (Role role : command.roles)
+        names.push_back(role_info(role).name);
+    return names.empty() ? "-" : OIIO::Strutil::join(names, ", ");
+}
+
+/// "id, IndexOB": the pass names a role is discovered by.
+std::string pass_names_text(const RoleInfo& info)
+{
+    std::vector<std::string> names(info.pass_names.begin(), info.pass_names.end());
+    return OIIO::Strutil::join(names, ", ");
+}
+
+/// The fixed examples that are about options rather than one command.
+std::vector<std::string> option_examples()
+{
+    return { "mcdtool 'shot/beauty.####.exr' --frames 1-48 --median 7 -o 'clean/beauty.####.exr'",
+             "mcdtool render.exr --median 7 -o clean.exr --preview before_after.png",
+             "mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N -v --median 3 -o out.exr",
+             "mcdtool render.exr --median 7 -d half --compression dwaa -o clean.exr --runstats" };
+}
+
+}  // namespace
+
+std::string version_text()
+{
+    return format("mcdtool {} (OpenImageIO {})", MCD_VERSION, OIIO_VERSION_STRING);
+}
+
+std::string help_text()
+{
+    std::string text = format("{}\n\nUsage: mcdtool INPUT [COMMAND ARGS | OPTION]... -o OUTPUT\n\n", summary);
+    text += "Commands run left to right on the beauty channels; each is one library call.\n";
+    for (const Command& command : command_table()) {
+        std::string help = command.help;
+        if (!command.roles.empty())
+            help += " Guides: " + roles_text(command) + ".";
+        text += help_row(command_usage(command), help);
+    }
+    text += "\nGuide roles (found in the input, or --aov ROLE=FILE[:CHANNELS]):\n";
+    for (const RoleInfo& info : role_table())
+        text += help_row(info.name, format("{} channel(s): {}. Found as: {}.", channel_count_text(info),
+                                           info.what, pass_names_text(info)));
+    for (const std::string& group : option_groups) {
+        text += "\n" + group + ":\n";
+        for (const OptionSpec& option : option_table())
+            if (group == option.group)
+                text += help_row(option_usage(option), option.help);
+    }
+    text += "\nExamples:\n";
+    for (const Command& command : command_table())
+        text += "  " + std::string(command.example) + "\n";
+    for (const std::string& example : option_examples())
+        text += "  " + example + "\n";
+    text += "\n" + wrap(exit_codes, 0, help_width) + "\n";
+    return text;
+}
+
+std::string help_markdown()
+{
+    std::string md = "# mcdtool\n\n<!-- Generated by `mcdtool --help-markdown > docs/mcdtool.md`; do not edit. -->\n\n";
+    md += format("{}\n\n```\nmcdtool INPUT [COMMAND ARGS | OPTION]... -o OUTPUT\n```\n\n", summary);
+    md += "It reads like oiiotool: the input, then commands applied left to right to the beauty "
+          "channels, `-o` writes the current result. Each command is exactly one call into "
+          "libmcdenoise (see SPEC.md for the filters' semantics). The output keeps every input "
+          "channel and the input's metadata with only the beauty channels replaced, in the input's "
+          "pixel types and compression unless `-d` or `--compression` say otherwise. Files are "
+          "written to a temp file beside the target and renamed into place once the whole frame "
+          "succeeded; an input is never replaced unless `--force` is given.\n\n";
+
+    md += "## Commands\n\n| command | guides | library call | what it does |\n|---|---|---|---|\n";
+    for (const Command& command : command_table())
+        md += format("| `{}` | {} | `mcdenoise::{}` ({}) | {} |\n", command_usage(command), roles_text(command),
+                     OIIO::Strutil::replace(command.name, "-", "_", true), command.header, command.help);
+    for (const Command& command : command_table()) {
+        md += format("\n### `--{}`\n\n{}\n\n", command.name, command.help);
+        md += "| parameter | type | meaning |\n|---|---|---|\n";
+        for (const Param& param : command.params)
+            md += format("| `{}` | {} | {} |\n", param.name,
+                         param.type == ParamType::integer ? "integer" : "number", param.help);
+        if (!command.roles.empty())
+            md += format("\nNeeds the guides: {}.\n", roles_text(command));
+        md += format("\n```\n{}\n```\n", command.example);
+    }
+
+    md += "\n## Guide roles\n\nFound automatically beside the beauty (testrender names, Blender Cycles "
+          "multilayer `<ViewLayer>.<Pass>.<Channel>` names, any view-layer name) or given with "
+          "`--aov ROLE=FILE[:CHANNELS]`, where CHANNELS is a comma list or a layer prefix "
+          "(`render.exr:N` selects `N.X,N.Y,N.Z`) and, without it, the file's channels are taken in "
+          "order. The beauty is bare `R,G,B` (or `Y`), else the first `Combined` pass, without alpha "
+          "(alpha passes through); `--beauty CHANNELS` overrides it. `-v` prints the channels used for "
+          "each role.\n\n| role | C++ / Python argument | channels | what it is | found as |\n"
+          "|---|---|---|---|---|\n";
+    for (const RoleInfo& info : role_table())
+        md += format("| `{}` | `{}` | {} | {} | {} |\n", info.name, info.argument, channel_count_text(info),
+                     info.what, pass_names_text(info));
+
+    md += "\n## Options\n";
+    for (const std::string& group : option_groups) {
+        md += format("\n### {}\n\n| option | meaning |\n|---|---|\n", group);
+        for (const OptionSpec& option : option_table())
+            if (group == option.group)
+                md += format("| `{}` | {} |\n", option_usage(option), option.help);
+    }
+
+    md += "\n## Sequences\n\nA frame pattern in the input, `--aov` files, `-o` and `--preview` is "
+          "replaced per frame: a lone `#` is four digits (as in oiiotool), a run of N `#` or N `@` is N "
+          "digits (`beauty.####.exr` -> `beauty.0007.exr`, as in Nuke), `%04d` is printf style. "
+          "`--frames` takes `1-48`, `1-10x2`, `10-1`, `1,3,5` or mixtures. A progress line (frames, "
+          "rate, ETA) is drawn on stderr when it is a terminal. A frame that fails is reported with "
+          "its number and the others are still written; the exit status is then 1.\n";
+    md += "\n## Examples\n\n```\n";
+    for (const Command& command : command_table())
+        md += std::string(command.example) + "\n";
+    for (const std::string& example : option_examples())
+        md += example + "\n";
+    md += "```\n\n## Errors and exit status\n\n" + std::string(exit_codes) + "\n";
+    return md;
+}
+
+}  // namespace mcdtool

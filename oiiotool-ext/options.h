@@ -1,0 +1,82 @@
+// options.h: what a parsed mcdtool command line holds, and the table of
+// global options (like the command table, --help is generated from it).
+#pragma once
+
+#include "commands.h"
+#include "roles.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mcdtool {
+
+/// One thing done, left to right, to the current image: a command or -o.
+struct Step {
+    const Command* command = nullptr;  ///< nullptr for an output (-o)
+    std::vector<std::string> values;   ///< the command's parameters
+    std::string output;                ///< the -o path (may hold a frame pattern)
+};
+
+/// `--aov ROLE=FILE[:CHANNELS]` as typed.
+struct AovRequest {
+    Role role;
+    std::string file;      ///< may hold a frame pattern
+    std::string channels;  ///< comma list or layer prefix; empty: all, in order
+    std::string typed;     ///< the argument as typed, for messages
+};
+
+/// What the program was asked to do.
+enum class Mode { run, help, help_markdown, version };
+
+/// A parsed command line.
+struct Options {
+    Mode mode = Mode::run;
+    std::string input;               ///< may hold a frame pattern
+    std::vector<Step> steps;
+    std::vector<AovRequest> aovs;
+    std::string beauty_channels;     ///< --beauty (empty: discover)
+    std::string frames;              ///< --frames (empty: a single image)
+    std::string data_format;         ///< -d (empty: the input's)
+    std::string compression;         ///< --compression (empty: the input's)
+    std::string compare;             ///< --compare REF
+    std::string preview;             ///< --preview FILE.png
+    std::string ocio_config;         ///< --ocio-config (empty: $OCIO or sRGB)
+    std::string display;             ///< --display (empty: config default)
+    std::string view;                ///< --view (empty: display default)
+    int threads = 0;
+    bool verbose = false;
+    bool runstats = false;
+    bool force = false;
+    bool skip_existing = false;
+};
+
+/// Sets the fields of Options from an option's arguments (already counted).
+using OptionFn = void (*)(Options&, const std::vector<std::string>&);
+
+/// One global option (position independent, except -o which is a step).
+struct OptionSpec {
+    const char* name;                  ///< without dashes: "o", "frames"
+    std::vector<const char*> params;   ///< argument names for usage
+    const char* group;                 ///< help section
+    const char* help;
+    OptionFn apply;
+};
+
+/// Every global option, in help order.
+const std::vector<OptionSpec>& option_table();
+
+/// "-o FILE" / "--frames LIST": how an option is typed.
+std::string option_usage(const OptionSpec& option);
+
+/// "-o" or "--frames": a name with its dashes.
+std::string dashed(std::string_view name);
+
+/// Parses argv into Options; throws UsageError naming the culprit.
+Options parse_command_line(const std::vector<std::string>& args);
+
+/// The known name (command, option or role) nearest to `typed` by edit
+/// distance, with dashes; empty if `candidates` is empty.
+std::string nearest(std::string_view typed, const std::vector<std::string>& candidates);
+
+}  // namespace mcdtool

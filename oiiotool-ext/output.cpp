@@ -1,0 +1,134 @@
+// output.cpp: merging the result into the input's channels, the output
+// spec, and atomic (temp file + rename) writes.
+#include "output.h"
+
+#include "error.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+using OIIO::TypeDesc;
+
+namespace {
+
+/// A temp name beside `path` that keeps its extension (OIIO picks the file
+/// format from it): "dir/.clean.exr.mcdtool-1234-0.exr".
+std::string temp_path(const std::string& path)
+{
+    static std::atomic<int> counter{ 0 };
+    std::filesystem::path final_path(path);
+    std::filesystem::path name = format(".{}.mcdtool-{}-{}{}", final_path.filename().string(), int(getpid()),
+                                        counter++, final_path.extension().string());
+    return (final_path.parent_path() / name).string();
+}
+
+/// Pointer to `image`'s float pixels, copying them into `storage` if
+/// they are not local contiguous floats.
+const float* float_pixels(const ImageBuf& image, std::vector<float>& storage)
+{
+    if (image.localpixels() && image.spec().format == TypeDesc::FLOAT)
+        return static_cast<const float*>(image.localpixels());
+    storage.resize(image.spec().image_pixels() * size_t(image.nchannels()));
+    image.get_pixels(image.roi(), TypeDesc::FLOAT, storage.data());
+    return storage.data();
+}
+
+}  // namespace
+
+OutputBatch::~OutputBatch()
+{
+    for (const auto& [temp, final_path] : pending_)
+        std::remove(temp.c_str());
+}
+
+void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
+                        const std::string& context)
+{
+    Timer timer;
+    auto fail = [&](const std::string& reason) {
+        return RunError(format("{} : cannot write '{}': {}", context, path, one_line(reason)));
+    };
+    std::string temp = temp_path(path);
+    auto out = OIIO::ImageOutput::create(temp);
+    if (!out)
+        throw fail(OIIO::geterror());
+    ImageSpec file_spec = spec;
+    if (!out->supports("channelformats"))
+        file_spec.channelformats.clear();
+    if (!out->supports("tiles"))
+        file_spec.tile_width = file_spec.tile_height = file_spec.tile_depth = 0;
+    pending_.emplace_back(temp, path);  // from here on the destructor removes it
+    if (!out->open(temp, file_spec))
+        throw fail(out->geterror());
+    std::vector<float> storage;
+    if (!out->write_image(TypeDesc::FLOAT, float_pixels(pixels, storage)))
+        throw fail(out->geterror());
+    if (!out->close())
+        throw fail(out->geterror());
+    stats_.add_write(timer.seconds());
+}
+
+void OutputBatch::commit()
+{
+    while (!pending_.empty()) {
+        auto [temp, final_path] = pending_.front();
+        std::error_code error;
+        std::filesystem::rename(temp, final_path, error);
+        if (error)
+            throw RunError(format("-o : cannot write '{}': {}", final_path, error.message()));
+        pending_.erase(pending_.begin());
+    }
+}
+
+ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result)
+{
+    ImageBuf merged;
+    if (!merged.copy(input, TypeDesc::FLOAT))
+        throw RunError(format("-o : cannot copy the input: {}", one_line(merged.geterror())));
+    OIIO::ROI window = result.roi();
+    std::vector<float> plane(window.npixels());
+    for (size_t k = 0; k < beauty.size(); ++k) {
+        OIIO::ROI from = window;
+        from.chbegin = int(k);
+        from.chend = int(k) + 1;
+        OIIO::ROI to = window;
+        to.chbegin = beauty[k];
+        to.chend = beauty[k] + 1;
+        if (!result.get_pixels(from, TypeDesc::FLOAT, plane.data())
+            || !merged.set_pixels(to, TypeDesc::FLOAT, plane.data()))
+            throw RunError(format("-o : cannot merge the result: {}", one_line(merged.geterror())));
+    }
+    return merged;
+}
+
+ImageSpec output_spec(const ImageBuf& input, const Options& options)
+{
+    ImageSpec spec = input.nativespec();
+    if (!options.data_format.empty()) {
+        spec.set_format(TypeDesc(options.data_format));
+        spec.channelformats.clear();
+    }
+    if (!options.compression.empty())
+        spec.attribute("compression", options.compression);
+    return spec;
+}
+
+bool same_file(const std::string& a, const std::string& b)
+{
+    namespace fs = std::filesystem;
+    std::error_code error;
+    if (fs::exists(a, error) && fs::exists(b, error))
+        return fs::equivalent(a, b, error);
+    return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error);
+}
+
+}  // namespace mcdtool

@@ -1,0 +1,57 @@
+// output.h: writing like a compositing step. The output keeps every input
+// channel and the input's metadata with only the beauty channels replaced,
+// in the input's pixel types and compression unless -d / --compression say
+// otherwise. Every file of a frame is written to a temp file in its own
+// directory and renamed into place only when the whole frame succeeded, so
+// a failure leaves no output behind.
+#pragma once
+
+#include "options.h"
+#include "runstats.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mcdtool {
+
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+
+/// The files of one frame, written to temp names and renamed together.
+class OutputBatch {
+public:
+    explicit OutputBatch(RunStats& stats) : stats_(stats) {}
+    OutputBatch(const OutputBatch&) = delete;
+    OutputBatch& operator=(const OutputBatch&) = delete;
+    /// Removes any temp file not committed.
+    ~OutputBatch();
+
+    /// Writes `pixels` (float, `spec.nchannels` channels covering the data
+    /// window of `spec`) to a temp file beside `path`. Throws RunError
+    /// "<context> : cannot write '<path>': <reason>".
+    void write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
+               const std::string& context);
+    /// Renames every temp file into place. Throws RunError on failure.
+    void commit();
+
+private:
+    RunStats& stats_;
+    std::vector<std::pair<std::string, std::string>> pending_;  ///< (temp, final)
+};
+
+/// The input image with channels `beauty` replaced by the channels of
+/// `result` (same data window), as float.
+ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result);
+
+/// The spec to write: the input file's (channels, per-channel pixel types,
+/// metadata, compression, data and display windows) with -d and
+/// --compression applied.
+ImageSpec output_spec(const ImageBuf& input, const Options& options);
+
+/// True if `a` and `b` name the same file (or would, once `b` exists).
+bool same_file(const std::string& a, const std::string& b);
+
+}  // namespace mcdtool

@@ -1,0 +1,100 @@
+// preview.cpp: side-by-side panels and the display transform.
+#include "preview.h"
+
+#include "error.h"
+
+#include <OpenImageIO/color.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/strutil.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+namespace IBA = OIIO::ImageBufAlgo;
+
+namespace {
+
+/// Channels of a preview panel (RGB).
+constexpr int panel_channels = 3;
+
+/// `image` as a 3-channel float panel with its origin at (0, 0): its
+/// first three channels, or its first channel repeated.
+ImageBuf panel(const ImageBuf& image)
+{
+    std::vector<int> order(panel_channels, 0);
+    if (image.nchannels() >= panel_channels)
+        order = { 0, 1, 2 };
+    ImageBuf rgb;
+    if (!IBA::channels(rgb, image, panel_channels, order))
+        throw RunError(format("--preview : {}", one_line(rgb.geterror())));
+    rgb.set_origin(0, 0);
+    return rgb;
+}
+
+/// The panels side by side on a black canvas.
+ImageBuf side_by_side(const std::vector<const ImageBuf*>& images)
+{
+    std::vector<ImageBuf> panels;
+    int width = 0;
+    int height = 0;
+    for (const ImageBuf* image : images) {
+        panels.push_back(panel(*image));
+        width += panels.back().spec().width;
+        height = std::max(height, panels.back().spec().height);
+    }
+    ImageBuf canvas(OIIO::ImageSpec(width, height, panel_channels, OIIO::TypeDesc::FLOAT));
+    IBA::zero(canvas);
+    int x = 0;
+    for (const ImageBuf& p : panels) {
+        if (!IBA::paste(canvas, x, 0, 0, 0, p))
+            throw RunError(format("--preview : {}", one_line(canvas.geterror())));
+        x += p.spec().width;
+    }
+    return canvas;
+}
+
+/// `canvas` converted from scene-linear to display values.
+ImageBuf to_display(const ImageBuf& canvas, const Options& options)
+{
+    bool have_config = !options.ocio_config.empty() || std::getenv("OCIO");
+    OIIO::ColorConfig config(options.ocio_config);
+    if (config.has_error())
+        throw RunError(format("--ocio-config : cannot load '{}': {}", options.ocio_config,
+                              one_line(config.geterror())));
+    ImageBuf display;
+    bool ok = false;
+    if (have_config) {
+        std::string name = options.display.empty() ? config.getDefaultDisplayName() : options.display;
+        std::string view = options.view.empty() ? config.getDefaultViewName(name) : options.view;
+        const char* linear = config.getColorSpaceNameByRole("scene_linear");
+        ok = IBA::ociodisplay(display, canvas, name, view, linear ? linear : "linear", "", false, "", "",
+                              &config);
+    } else {
+        if (!options.display.empty() || !options.view.empty())
+            throw RunError("--display / --view : need an OCIO config (--ocio-config FILE or $OCIO)");
+        ok = IBA::colorconvert(display, canvas, "linear", "sRGB", false, "", "", &config);
+    }
+    if (!ok)
+        throw RunError(format("--preview : display transform failed: {}", one_line(display.geterror())));
+    return display;
+}
+
+}  // namespace
+
+void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,
+                   const ImageBuf* reference, const Options& options, OutputBatch& batch)
+{
+    std::vector<const ImageBuf*> images = { &before, &after };
+    if (reference)
+        images.push_back(reference);
+    ImageBuf display = to_display(side_by_side(images), options);
+    OIIO::ImageSpec spec = display.spec();
+    spec.set_format(OIIO::TypeDesc::UINT8);
+    batch.write(path, spec, display, "--preview");
+}
+
+}  // namespace mcdtool

@@ -1,0 +1,21 @@
+// preview.h: --preview, a display-referred side-by-side picture (input |
+// result, and | reference with --compare) through OpenColorIO: the config
+// of --ocio-config or $OCIO with its display and view, else a plain
+// linear -> sRGB transform.
+#pragma once
+
+#include "options.h"
+#include "output.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <string>
+
+namespace mcdtool {
+
+/// Adds the preview of `before` | `after` (| `reference` if not null) to
+/// `batch` at `path`, as 8-bit display values.
+void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,
+                   const ImageBuf* reference, const Options& options, OutputBatch& batch);
+
+}  // namespace mcdtool
