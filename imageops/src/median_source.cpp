@@ -1,7 +1,7 @@
 // median_source.cpp: reading the beauty into the planes the median walker uses.
 #include "median_walker.h"
 
-#include "separable_sum.h"
+#include "separable_mean.h"
 
 #include <OpenImageIO/imagebufalgo_util.h>
 
@@ -14,40 +14,28 @@ using OIIO::ROI;
 
 namespace {
 
-// Per channel, 1 for each ROI pixel whose window holds only finite values:
-// box sums of a non-finite indicator, which are exact small integers.
-std::vector<std::vector<char>> finite_window_flags(const PixelBlock& block,
-                                                   const ROI& roi, int size)
+// The box mean of a non-finite indicator over every ROI pixel's window:
+// exactly 0 where the window holds only finite values. Its sums are small
+// integers, exact from any restart point, so they restart from the block's
+// own corner.
+std::unique_ptr<ResultPixels> nonfinite_share(const PixelBlock& block, const ROI& roi,
+                                              int size, int nthreads)
 {
-    const int nc = block.nchannels;
-    PixelBlock bad;
-    bad.region     = block.region;
-    bad.nchannels  = nc;
-    bad.row_stride = std::ptrdiff_t(block.width()) * nc;
-    bad.owned.resize(size_t(bad.row_stride) * block.height());
-    bad.data = bad.owned.data();
-    float* out = bad.owned.data();
-    for (int y = block.region.ybegin; y < block.region.yend; ++y) {
-        const float* row = block.row(y);
-        for (std::ptrdiff_t i = 0; i < bad.row_stride; ++i)
-            *out++ = std::isfinite(row[i]) ? 0.0f : 1.0f;
-    }
-    std::vector<double> counts(size_t(roi.width()) * roi.height() * nc);
-    const Kernel1D box = box_kernel(size);
-    separable_sums(bad, box, { block.region.xbegin, block.region.ybegin }, roi,
-                   counts.data());
-    std::vector<std::vector<char>> flags(size_t(nc),
-                                         std::vector<char>(size_t(roi.width()) * roi.height()));
-    for (size_t p = 0; p < flags[0].size(); ++p)
-        for (int c = 0; c < nc; ++c)
-            flags[size_t(c)][p] = counts[p * nc + size_t(c)] == 0.0;
-    return flags;
+    SeparableSource indicator;
+    make_separable_source(nonfinite_indicator(block, nthreads), block.region,
+                          box_kernel(size), nthreads, indicator);
+    auto share = std::make_unique<ResultPixels>();
+    share->use_buffer(roi);
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+        separable_mean_strip(indicator, strip, *share);
+    });
+    return share;
 }
 
 }  // namespace
 
 bool load_median_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
-                        const ROI& roi, int size, MedianSource& source)
+                        const ROI& roi, int size, int nthreads, MedianSource& source)
 {
     source.radius = size / 2;
     source.roi    = roi;
@@ -59,12 +47,10 @@ bool load_median_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
         dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
         return false;
     }
-    source.planes.clear();
-    for (int c = 0; c < block.nchannels; ++c)
-        source.planes.push_back(channel_plane(block, c));
-    source.window_finite.clear();
-    if (has_nonfinite(block))
-        source.window_finite = finite_window_flags(block, roi, size);
+    source.planes = channel_planes(block, nthreads);
+    source.nonfinite_share.reset();
+    if (has_nonfinite(block, nthreads))
+        source.nonfinite_share = nonfinite_share(block, roi, size, nthreads);
     return true;
 }
 

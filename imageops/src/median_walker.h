@@ -10,19 +10,20 @@
 #include "pixel_block.h"
 #include "window.h"
 
+#include <memory>
 #include <vector>
 
 namespace mcdenoise {
 
 /// The beauty as the median walker reads it: one contiguous plane per
-/// channel over `region`, and per channel a flag per ROI pixel telling
-/// whether its window holds only finite values (empty when all are finite).
+/// channel over `region`, and, when any value is non-finite, the share of
+/// non-finite values in each ROI pixel's window, per channel.
 struct MedianSource {
     OIIO::ROI region;
     OIIO::ROI roi;
     int radius = 0;
     std::vector<std::vector<float>> planes;
-    std::vector<std::vector<char>> window_finite;
+    std::unique_ptr<ResultPixels> nonfinite_share;
 
     const float* plane_row(int c, int y) const
     {
@@ -31,9 +32,7 @@ struct MedianSource {
     }
     bool finite_window(int c, int x, int y) const
     {
-        return window_finite.empty()
-               || window_finite[size_t(c)][size_t(y - roi.ybegin) * roi.width()
-                                           + size_t(x - roi.xbegin)];
+        return !nonfinite_share || nonfinite_share->pixel(x, y)[c] == 0.0f;
     }
 };
 
@@ -41,7 +40,7 @@ struct MedianSource {
 /// Returns false with `dst`'s error set if the pixels cannot be read.
 bool load_median_source(const char* op, OIIO::ImageBuf& dst,
                         const OIIO::ImageBuf& beauty, const OIIO::ROI& roi,
-                        int size, MedianSource& source);
+                        int size, int nthreads, MedianSource& source);
 
 /// A viability rule for the median walker. `Rule` provides
 /// `bool uniform(int x, int y) const`: every pixel of (x, y)'s clipped window

@@ -10,11 +10,6 @@ namespace mcdenoise {
 using OIIO::ImageBuf;
 using OIIO::ROI;
 
-ResultPixels::ResultPixels(const ROI& r)
-    : roi(r), data(size_t(r.width()) * r.height() * r.nchannels(), 0.0f)
-{
-}
-
 bool resolve_roi(const char* op, ImageBuf& dst, const ImageBuf& beauty, ROI& roi)
 {
     if (!beauty.initialized()) {
@@ -58,22 +53,85 @@ bool check_window_op(const char* op, ImageBuf& dst, const ImageBuf& beauty, int 
     return resolve_roi(op, dst, beauty, roi);
 }
 
-bool write_result(const char* op, ImageBuf& dst, const ImageBuf& beauty,
-                  const ResultPixels& result)
+namespace {
+
+// Allocate `dst` as IBAprep would (beauty's spec and metadata, float pixels,
+// data window `roi`, channels 0 .. roi.chend) without clearing pixels that
+// are about to be written.
+void allocate_like(ImageBuf& dst, const ImageBuf& beauty, const ROI& roi)
 {
-    ROI roi = result.roi;
-    if (!OIIO::ImageBufAlgo::IBAprep(roi, &dst, &beauty,
+    OIIO::ImageSpec spec = beauty.spec();
+    spec.set_format(OIIO::TypeDesc::FLOAT);
+    spec.channelformats.clear();
+    spec.x      = roi.xbegin;
+    spec.y      = roi.ybegin;
+    spec.width  = roi.width();
+    spec.height = roi.height();
+    spec.nchannels = roi.chend;
+    spec.channelnames.resize(size_t(roi.chend));
+    if (spec.alpha_channel >= roi.chend)
+        spec.alpha_channel = -1;
+    if (spec.z_channel >= roi.chend)
+        spec.z_channel = -1;
+    dst.reset(spec, OIIO::InitializePixels::No);
+}
+
+}  // namespace
+
+bool begin_result(const char* op, ImageBuf& dst, const ImageBuf& beauty,
+                  std::initializer_list<const ImageBuf*> inputs, const ROI& roi,
+                  ResultPixels& result)
+{
+    if (!dst.initialized())
+        allocate_like(dst, beauty, roi);
+    ROI r = roi;
+    if (!OIIO::ImageBufAlgo::IBAprep(r, &dst, &beauty,
                                      OIIO::ImageBufAlgo::IBAprep_DST_FLOAT_PIXELS
-                                         | OIIO::ImageBufAlgo::IBAprep_NO_SUPPORT_VOLUME))
+                                         | OIIO::ImageBufAlgo::IBAprep_NO_SUPPORT_VOLUME)) {
+        if (!dst.has_error())
+            dst.errorfmt("{}: could not allocate the result", op);
         return false;
-    if (!dst.set_pixels(result.roi, OIIO::TypeDesc::FLOAT, result.data.data())) {
+    }
+    result.roi = roi;
+    bool shared = false;
+    for (const ImageBuf* in : inputs)
+        shared |= in == &dst
+                  || (in->localpixels() && in->localpixels() == dst.localpixels());
+    const bool direct = !shared && dst.localpixels()
+                        && dst.spec().format == OIIO::TypeDesc::FLOAT
+                        && roi.chend <= dst.nchannels();
+    if (direct) {
+        result.m_base = static_cast<float*>(dst.pixeladdr(roi.xbegin, roi.ybegin, roi.zbegin,
+                                                          roi.chbegin));
+        result.m_pixel_stride = dst.pixel_stride() / std::ptrdiff_t(sizeof(float));
+        result.m_row_stride   = dst.scanline_stride() / std::ptrdiff_t(sizeof(float));
+    } else {
+        result.use_buffer(roi);
+    }
+    return true;
+}
+
+void ResultPixels::use_buffer(const ROI& r)
+{
+    roi            = r;
+    m_pixel_stride = r.nchannels();
+    m_row_stride   = std::ptrdiff_t(r.width()) * r.nchannels();
+    m_buffer.reset(new float[size_t(m_row_stride) * r.height()]);
+    m_base = m_buffer.get();
+}
+
+bool finish_result(const char* op, ImageBuf& dst, ResultPixels& result)
+{
+    if (result.m_buffer
+        && !dst.set_pixels(result.roi, OIIO::TypeDesc::FLOAT, result.m_buffer.get())) {
         if (!dst.has_error())
             dst.errorfmt("{}: could not write the result pixels", op);
         return false;
     }
     const int64_t empty = result.empty_windows.load();
     if (empty > 0)
-        dst.specmod().attribute("mcdenoise:empty_windows", int(std::min<int64_t>(empty, INT32_MAX)));
+        dst.specmod().attribute("mcdenoise:empty_windows",
+                                int(std::min<int64_t>(empty, INT32_MAX)));
     else
         dst.specmod().erase_attribute("mcdenoise:empty_windows");
     return true;

@@ -1,31 +1,48 @@
 // operation.h: the steps every operation's bool and value forms share:
-// checking the beauty and the ROI, the float result buffer the filters fill,
-// and writing it into `dst` only once everything has succeeded.
+// checking the beauty and the ROI, where the result pixels go, and finishing
+// `dst` once everything has succeeded.
 #pragma once
 
 #include <OpenImageIO/imagebuf.h>
 
 #include <atomic>
 #include <cstdint>
-#include <vector>
+#include <initializer_list>
+#include <memory>
 
 namespace mcdenoise {
 
-/// The finished pixels of an operation over `roi`, channels interleaved.
-struct ResultPixels {
-    explicit ResultPixels(const OIIO::ROI& roi);
-
-    /// Pointer to channel `roi.chbegin` of pixel (x, y).
-    float* pixel(int x, int y)
+/// Where an operation writes its pixels over `roi`: straight into `dst`
+/// when it holds local float pixels no input shares, else a float buffer
+/// that `finish_result` copies in.
+class ResultPixels {
+public:
+    /// Pointer to channel `roi.chbegin` of pixel (x, y); the next channels
+    /// follow contiguously.
+    float* pixel(int x, int y) const
     {
-        return data.data()
-               + (size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin))
-                     * roi.nchannels();
+        return m_base + (y - roi.ybegin) * m_row_stride
+               + std::ptrdiff_t(x - roi.xbegin) * m_pixel_stride;
     }
 
+    /// Put the pixels of `roi` in a buffer owned by this object.
+    void use_buffer(const OIIO::ROI& roi);
+
+    /// Floats from one pixel to the next.
+    std::ptrdiff_t pixel_stride() const { return m_pixel_stride; }
+
     OIIO::ROI roi;
-    std::vector<float> data;
     std::atomic<int64_t> empty_windows { 0 };  ///< windows with no finite value
+
+private:
+    friend bool begin_result(const char*, OIIO::ImageBuf&, const OIIO::ImageBuf&,
+                             std::initializer_list<const OIIO::ImageBuf*>,
+                             const OIIO::ROI&, ResultPixels&);
+    friend bool finish_result(const char*, OIIO::ImageBuf&, ResultPixels&);
+    float* m_base                 = nullptr;
+    std::ptrdiff_t m_pixel_stride = 0;  // in floats
+    std::ptrdiff_t m_row_stride   = 0;  // in floats
+    std::unique_ptr<float[]> m_buffer;  // when not writing into dst
 };
 
 /// Settle `roi` for an operation on `beauty`: the default is the beauty's
@@ -40,11 +57,17 @@ bool resolve_roi(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beau
 bool check_window_op(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
                      int size, OIIO::ROI& roi);
 
-/// Allocate `dst` if needed (float pixels covering the ROI) and copy the
-/// result in; record the count of empty windows in the `dst` attribute
-/// `mcdenoise:empty_windows`.
-bool write_result(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
-                  const ResultPixels& result);
+/// Allocate `dst` if needed (float pixels covering `roi`, like `beauty`
+/// otherwise) and point `result` at where the pixels go. Call only once
+/// every input has been checked and read: from here on `dst` changes.
+/// `inputs` are every image the operation reads (to detect in-place use).
+bool begin_result(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                  std::initializer_list<const OIIO::ImageBuf*> inputs,
+                  const OIIO::ROI& roi, ResultPixels& result);
+
+/// Copy buffered pixels into `dst` and record the count of empty windows in
+/// the `dst` attribute `mcdenoise:empty_windows`.
+bool finish_result(const char* op, OIIO::ImageBuf& dst, ResultPixels& result);
 
 /// The value form of an operation: run the bool form `run(dst)` on a new
 /// image and return it, with an error set if it failed.

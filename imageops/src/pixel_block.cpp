@@ -1,7 +1,13 @@
-// pixel_block.cpp: loading image pixels into contiguous float blocks.
+// pixel_block.cpp: loading image pixels into contiguous float blocks, and the
+// derived blocks the filters read (finite masks, channel planes).
 #include "pixel_block.h"
 
+#include <OpenImageIO/imagebufalgo_util.h>
+
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace mcdenoise {
 
@@ -20,6 +26,40 @@ bool can_view_in_place(const ImageBuf& img, const ROI& region)
            && img.scanline_stride() % std::ptrdiff_t(sizeof(float)) == 0;
 }
 
+// 1 if `v` is NaN or infinite (all exponent bits set), else 0; a form the
+// compiler vectorises.
+inline uint32_t is_nonfinite_bits(float v)
+{
+    uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return (bits & 0x7f800000u) == 0x7f800000u;
+}
+
+// Run `row_fn(y)` for every row of `block`, rows split among threads.
+template<class RowFn>
+void for_each_row(const PixelBlock& block, int nthreads, RowFn&& row_fn)
+{
+    ROI rows = block.region;
+    rows.chbegin = 0;
+    rows.chend   = 1;
+    OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
+        for (int y = strip.ybegin; y < strip.yend; ++y)
+            row_fn(y);
+    });
+}
+
+// An owned block with `nchannels` channels over `region`.
+PixelBlock owned_block(const ROI& region, int nchannels)
+{
+    PixelBlock out;
+    out.region     = region;
+    out.nchannels  = nchannels;
+    out.row_stride = std::ptrdiff_t(region.width()) * nchannels;
+    out.owned.resize(size_t(out.row_stride) * region.height());
+    out.data = out.owned.data();
+    return out;
+}
+
 }  // namespace
 
 bool load_block(const ImageBuf& img, ROI region, PixelBlock& block)
@@ -33,60 +73,70 @@ bool load_block(const ImageBuf& img, ROI region, PixelBlock& block)
             img.pixeladdr(region.xbegin, region.ybegin));
         return true;
     }
-    block.row_stride = std::ptrdiff_t(region.width()) * block.nchannels;
-    block.owned.resize(size_t(block.row_stride) * region.height());
-    block.data = block.owned.data();
+    block = owned_block(region, region.nchannels());
     return img.get_pixels(region, TypeDesc::FLOAT, block.owned.data());
 }
 
-bool has_nonfinite(const PixelBlock& block)
+bool has_nonfinite(const PixelBlock& block, int nthreads)
 {
     const std::ptrdiff_t n = std::ptrdiff_t(block.width()) * block.nchannels;
-    for (int y = block.region.ybegin; y < block.region.yend; ++y) {
+    std::atomic<bool> found { false };
+    for_each_row(block, nthreads, [&](int y) {
         const float* row = block.row(y);
-        bool bad         = false;
+        uint32_t bad     = 0;
         for (std::ptrdiff_t i = 0; i < n; ++i)
-            bad |= !std::isfinite(row[i]);
+            bad |= is_nonfinite_bits(row[i]);
         if (bad)
-            return true;
-    }
-    return false;
+            found = true;
+    });
+    return found;
 }
 
-PixelBlock with_finite_mask(const PixelBlock& src)
+PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
 {
-    const int nc = src.nchannels;
-    PixelBlock out;
-    out.region     = src.region;
-    out.nchannels  = 2 * nc;
-    out.row_stride = std::ptrdiff_t(src.width()) * out.nchannels;
-    out.owned.resize(size_t(out.row_stride) * src.height());
-    out.data = out.owned.data();
-    float* dst = out.owned.data();
-    for (int y = src.region.ybegin; y < src.region.yend; ++y) {
-        const float* row = src.row(y);
-        for (int x = 0; x < src.width(); ++x, row += nc, dst += 2 * nc) {
+    const int nc   = src.nchannels;
+    PixelBlock out = owned_block(src.region, 2 * nc);
+    for_each_row(src, nthreads, [&](int y) {
+        const float* in = src.row(y);
+        float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
+        for (int x = 0; x < src.width(); ++x, in += nc, dst += 2 * nc)
             for (int c = 0; c < nc; ++c) {
-                const bool finite = std::isfinite(row[c]);
-                dst[c]      = finite ? row[c] : 0.0f;
+                const bool finite = std::isfinite(in[c]);
+                dst[c]      = finite ? in[c] : 0.0f;
                 dst[nc + c] = finite ? 1.0f : 0.0f;
             }
-        }
-    }
+    });
     return out;
 }
 
-std::vector<float> channel_plane(const PixelBlock& src, int channel)
+PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads)
 {
-    const int w = src.width();
-    std::vector<float> plane(size_t(w) * src.height());
-    float* dst = plane.data();
-    for (int y = src.region.ybegin; y < src.region.yend; ++y) {
-        const float* row = src.row(y) + channel;
-        for (int x = 0; x < w; ++x)
-            *dst++ = row[std::ptrdiff_t(x) * src.nchannels];
-    }
-    return plane;
+    PixelBlock out = owned_block(src.region, src.nchannels);
+    for_each_row(src, nthreads, [&](int y) {
+        const float* in = src.row(y);
+        float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
+        for (std::ptrdiff_t i = 0; i < out.row_stride; ++i)
+            dst[i] = std::isfinite(in[i]) ? 0.0f : 1.0f;
+    });
+    return out;
+}
+
+std::vector<std::vector<float>> channel_planes(const PixelBlock& src, int nthreads)
+{
+    const int w = src.width(), nc = src.nchannels;
+    std::vector<std::vector<float>> planes(static_cast<size_t>(nc));
+    for (auto& plane : planes)
+        plane.resize(size_t(w) * src.height());
+    for_each_row(src, nthreads, [&](int y) {
+        const float* in     = src.row(y);
+        const size_t offset = size_t(y - src.region.ybegin) * w;
+        for (int c = 0; c < nc; ++c) {
+            float* dst = planes[size_t(c)].data() + offset;
+            for (int x = 0; x < w; ++x)
+                dst[x] = in[std::ptrdiff_t(x) * nc + c];
+        }
+    });
+    return planes;
 }
 
 }  // namespace mcdenoise

@@ -43,15 +43,18 @@ struct PixelBlock {
 bool load_block(const OIIO::ImageBuf& img, OIIO::ROI region, PixelBlock& block);
 
 /// True if any value of `block` is NaN or infinite.
-bool has_nonfinite(const PixelBlock& block);
+bool has_nonfinite(const PixelBlock& block, int nthreads);
 
 /// A copy of `src` with twice the channels: each finite value as it is (0 in
 /// place of a non-finite one), then for each channel 1 where the value is
 /// finite and 0 where not. Summing both halves with the same weights gives
 /// a masked numerator and the weights that contributed.
-PixelBlock with_finite_mask(const PixelBlock& src);
+PixelBlock with_finite_mask(const PixelBlock& src, int nthreads);
 
-/// One channel of `src` as a contiguous plane (row stride = width).
-std::vector<float> channel_plane(const PixelBlock& src, int channel);
+/// A block like `src` holding 1 where its value is non-finite, 0 elsewhere.
+PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads);
+
+/// Each channel of `src` as a contiguous plane (row stride = width).
+std::vector<std::vector<float>> channel_planes(const PixelBlock& src, int nthreads);
 
 }  // namespace mcdenoise

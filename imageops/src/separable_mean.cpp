@@ -1,95 +1,412 @@
-// separable_mean.cpp: separable sums divided by the weights that contributed.
+// separable_mean.cpp: box means by sliding double-precision sums, binomial
+// means by float column-then-row convolution, both divided by the weights
+// that contributed.
 #include "separable_mean.h"
 
-#include <OpenImageIO/imagebufalgo_util.h>
+#include "window.h"
+
+#include <algorithm>
 
 namespace mcdenoise {
 
 using OIIO::ImageBuf;
 using OIIO::ROI;
 
+Kernel1D box_kernel(int size)
+{
+    Kernel1D k;
+    k.radius = size / 2;
+    k.box    = true;
+    k.weights.assign(size_t(size), 1.0f);
+    return k;
+}
+
+Kernel1D binomial_kernel(int size)
+{
+    std::vector<double> row(size_t(size), 0.0);
+    row[0] = 1.0;
+    for (int n = 1; n < size; ++n) {  // next row of Pascal's triangle, halved
+        for (int i = n; i >= 1; --i)
+            row[size_t(i)] = 0.5 * (row[size_t(i)] + row[size_t(i - 1)]);
+        row[0] *= 0.5;
+    }
+    Kernel1D k;
+    k.radius = size / 2;
+    k.weights.assign(row.begin(), row.end());
+    return k;
+}
+
+ROI separable_source_region(const ROI& roi, const Kernel1D& kernel, const ROI& bounds)
+{
+    ROI grown = roi;
+    if (kernel.box) {
+        const int interval = restart_interval(kernel.radius);
+        grown.xbegin = restart_at_or_before(roi.xbegin, bounds.xbegin, interval);
+        grown.ybegin = restart_at_or_before(roi.ybegin, bounds.ybegin, interval);
+    }
+    return grow_and_clip(grown, kernel.radius, bounds);
+}
+
+void make_separable_source(PixelBlock block, const ROI& bounds, Kernel1D kernel,
+                           int nthreads, SeparableSource& source)
+{
+    source.kernel    = std::move(kernel);
+    source.origin_x  = bounds.xbegin;
+    source.origin_y  = bounds.ybegin;
+    source.nchannels = block.nchannels;
+    source.masked    = has_nonfinite(block, nthreads);
+    source.block     = source.masked ? with_finite_mask(block, nthreads) : std::move(block);
+}
+
+bool load_separable_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
+                           const ROI& roi, Kernel1D kernel, int nthreads,
+                           SeparableSource& source)
+{
+    ROI region     = separable_source_region(roi, kernel, beauty.roi());
+    region.chbegin = roi.chbegin;
+    region.chend   = roi.chend;
+    PixelBlock block;
+    if (!load_block(beauty, region, block)) {
+        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+        return false;
+    }
+    make_separable_source(std::move(block), beauty.roi(), std::move(kernel), nthreads,
+                          source);
+    return true;
+}
+
 namespace {
 
-// The window weight of every pixel of one row of `strip` when every value is
-// finite; rows whose clipped vertical span matches reuse the previous row.
-class GeometricWeights {
+// Turns one row of window sums into means: each sum divided by the weights
+// that contributed: the mask sums that follow the value sums when the source
+// is masked, else the row's geometric weights (the same for every channel of
+// a pixel). Windows with no weight give 0 and are counted.
+template<class Sum>
+class RowMeans {
 public:
-    GeometricWeights(const Kernel1D& kernel, const ROI& region, const ROI& strip)
-        : m_kernel(kernel), m_region(region), m_strip(strip),
-          m_row(size_t(strip.width()))
+    RowMeans(int nchannels, bool masked, int width)
+        : m_nc(nchannels), m_masked(masked), m_quotients(size_t(width) * nchannels)
     {
     }
-    const double* row(int y)
+
+    /// `sums`: `width` pixels of (2 when masked) * nchannels values;
+    /// `geometric`: `width` weights, unused when masked.
+    int64_t write(const Sum* sums, const Sum* geometric, float* out, std::ptrdiff_t stride)
     {
-        const int r     = m_kernel.radius;
-        const int above = std::min(r, y - m_region.ybegin);
-        const int below = std::min(r, m_region.yend - 1 - y);
-        if (above != m_above || below != m_below) {
-            for (int x = m_strip.xbegin; x < m_strip.xend; ++x)
-                m_row[size_t(x - m_strip.xbegin)] = window_weight(m_kernel, x, y, m_region);
-            m_above = above;
-            m_below = below;
+        const int nc      = m_nc;
+        const size_t n    = m_quotients.size();
+        const int width   = int(n / size_t(nc));
+        int64_t empty     = 0;
+        if (m_masked) {
+            for (int x = 0; x < width; ++x, sums += 2 * nc, out += stride)
+                for (int c = 0; c < nc; ++c) {
+                    const Sum weight = sums[nc + c];
+                    const bool any   = weight > Sum(0);
+                    out[c]           = any ? float(sums[c] * (Sum(1) / weight)) : 0.0f;
+                    empty += !any;
+                }
+            return empty;
         }
-        return m_row.data();
+        expand(geometric);
+        float* q = m_quotients.data();
+        for (size_t i = 0; i < n; ++i)  // every geometric weight is > 0
+            q[i] = float(sums[i] * m_reciprocals[i]);
+        if (stride == nc) {
+            std::copy(q, q + n, out);
+        } else {
+            for (int x = 0; x < width; ++x, q += nc, out += stride)
+                for (int c = 0; c < nc; ++c)
+                    out[c] = q[c];
+        }
+        return empty;
     }
 
 private:
-    const Kernel1D& m_kernel;
-    ROI m_region, m_strip;
-    std::vector<double> m_row;
-    int m_above = -1, m_below = -1;
+    // One reciprocal weight per value, rebuilt only when the row's weights
+    // change (they are the same for every row whose window is not clipped).
+    void expand(const Sum* geometric)
+    {
+        const size_t width = m_quotients.size() / size_t(m_nc);
+        if (m_weights.size() == width && std::equal(m_weights.begin(), m_weights.end(), geometric))
+            return;
+        m_weights.assign(geometric, geometric + width);
+        m_reciprocals.resize(m_quotients.size());
+        for (size_t x = 0; x < width; ++x)
+            std::fill_n(m_reciprocals.begin() + std::ptrdiff_t(x * m_nc), m_nc,
+                        Sum(1) / geometric[x]);
+    }
+
+    int m_nc;
+    bool m_masked;
+    std::vector<float> m_quotients;
+    std::vector<Sum> m_weights, m_reciprocals;
 };
 
-void mean_strip(const PixelBlock& block, bool masked, const Kernel1D& kernel,
-                SumOrigin origin, const ROI& strip, ResultPixels& result)
-{
-    const int nc   = result.roi.nchannels();
-    const int sumc = block.nchannels;
-    const size_t w = size_t(strip.width());
-    std::vector<double> sums(w * strip.height() * sumc);
-    separable_sums(block, kernel, origin, strip, sums.data());
-    GeometricWeights geometric(kernel, block.region, strip);
-    int64_t empty = 0;
-    for (int y = strip.ybegin; y < strip.yend; ++y) {
-        const double* s = sums.data() + size_t(y - strip.ybegin) * w * sumc;
-        const double* g = masked ? nullptr : geometric.row(y);
-        float* out      = result.pixel(strip.xbegin, y);
-        for (size_t x = 0; x < w; ++x, s += sumc, out += nc) {
-            for (int c = 0; c < nc; ++c) {
-                const double weight = masked ? s[nc + c] : g[x];
-                const bool any      = weight > 0.0;
-                out[c]              = any ? float(s[c] / weight) : 0.0f;
-                empty += !any;
+// Box means: vertical sums slide down the columns, horizontal sums slide
+// along the row, both in double and both restarting from scratch every
+// `restart_interval` pixels from the data window's origin.
+class BoxRows {
+public:
+    BoxRows(const SeparableSource& src, const ROI& strip)
+        : m_src(src), m_strip(strip), m_r(src.kernel.radius),
+          m_interval(restart_interval(m_r)), m_channels(src.block.nchannels),
+          m_xb(restart_at_or_before(strip.xbegin, src.origin_x, m_interval)),
+          m_x0(std::max(src.block.region.xbegin, m_xb - m_r)),
+          m_x1(std::min(src.block.region.xend, strip.xend + m_r)),
+          m_col(size_t(m_x1 - m_x0) * m_channels), m_sum(size_t(m_channels)),
+          m_row(size_t(strip.width()) * m_channels), m_weights(size_t(strip.width())),
+          m_means(src.nchannels, src.masked, strip.width())
+    {
+    }
+
+    int64_t row(int y, float* out, std::ptrdiff_t stride)
+    {
+        const int start = m_col_y == no_row
+                              ? restart_at_or_before(y, m_src.origin_y, m_interval)
+                              : m_col_y + 1;
+        for (int yy = start; yy <= y; ++yy)
+            advance_columns(yy);
+        horizontal();
+        const ROI& reg    = m_src.block.region;
+        const double rows = double(clip_window(y, m_r, reg.ybegin, reg.yend).size());
+        for (int x = m_strip.xbegin; x < m_strip.xend; ++x)
+            m_weights[size_t(x - m_strip.xbegin)]
+                = rows * double(clip_window(x, m_r, reg.xbegin, reg.xend).size());
+        return m_means.write(m_row.data(), m_weights.data(), out, stride);
+    }
+
+private:
+    static constexpr int no_row = INT32_MIN;
+
+    const double* col(int x) const { return m_col.data() + size_t(x - m_x0) * m_channels; }
+
+    void add_row(int y, double sign)
+    {
+        const float* p = m_src.block.pixel(m_x0, y);
+        const size_t n = m_col.size();
+        double* c      = m_col.data();
+        if (sign > 0)
+            for (size_t i = 0; i < n; ++i)
+                c[i] += p[i];
+        else
+            for (size_t i = 0; i < n; ++i)
+                c[i] -= p[i];
+    }
+
+    void advance_columns(int y)
+    {
+        const ROI& reg = m_src.block.region;
+        if ((y - m_src.origin_y) % m_interval == 0) {
+            std::fill(m_col.begin(), m_col.end(), 0.0);
+            const Span span = clip_window(y, m_r, reg.ybegin, reg.yend);
+            for (int yy = span.begin; yy < span.end; ++yy)
+                add_row(yy, 1.0);
+        } else {
+            if (y + m_r < reg.yend)
+                add_row(y + m_r, 1.0);
+            if (y - m_r - 1 >= reg.ybegin)
+                add_row(y - m_r - 1, -1.0);
+        }
+        m_col_y = y;
+    }
+
+    void horizontal()
+    {
+        switch (m_channels) {
+        case 1: return horizontal_for<1>();
+        case 2: return horizontal_for<2>();
+        case 3: return horizontal_for<3>();
+        case 4: return horizontal_for<4>();
+        case 6: return horizontal_for<6>();
+        case 8: return horizontal_for<8>();
+        default: return horizontal_for<0>();
+        }
+    }
+
+    // Sliding row sums, from scratch at each restart point; `FixedC` is the
+    // channel count when known at compile time (0: m_channels).
+    template<int FixedC>
+    void horizontal_for()
+    {
+        const ROI& reg = m_src.block.region;
+        const int C    = FixedC ? FixedC : m_channels;
+        const int r    = m_r;
+        double* s      = m_sum.data();
+        for (int xa = m_xb; xa < m_strip.xend; xa += m_interval) {
+            const int xe    = std::min(xa + m_interval, m_strip.xend);
+            const Span span = clip_window(xa, r, reg.xbegin, reg.xend);
+            for (int c = 0; c < C; ++c)
+                s[c] = 0.0;
+            for (int x = span.begin; x < span.end; ++x) {
+                const double* v = col(x);
+                for (int c = 0; c < C; ++c)
+                    s[c] += v[c];
+            }
+            for (int x = xa; x < xe; ++x) {
+                if (x > xa) {
+                    if (x + r < reg.xend) {
+                        const double* v = col(x + r);
+                        for (int c = 0; c < C; ++c)
+                            s[c] += v[c];
+                    }
+                    if (x - r - 1 >= reg.xbegin) {
+                        const double* v = col(x - r - 1);
+                        for (int c = 0; c < C; ++c)
+                            s[c] -= v[c];
+                    }
+                }
+                if (x >= m_strip.xbegin) {
+                    double* o = m_row.data() + size_t(x - m_strip.xbegin) * C;
+                    for (int c = 0; c < C; ++c)
+                        o[c] = s[c];
+                }
             }
         }
+    }
+
+    const SeparableSource& m_src;
+    ROI m_strip;
+    int m_r, m_interval, m_channels;
+    int m_xb, m_x0, m_x1;
+    std::vector<double> m_col;
+    std::vector<double> m_sum;
+    std::vector<double> m_row;      // window sums of the current row
+    std::vector<double> m_weights;  // geometric weight of each pixel's window
+    RowMeans<double> m_means;
+    int m_col_y = no_row;
+};
+
+// Binomial means: each row's window columns weighted and summed (float SIMD
+// over the whole row), then each pixel's row of column sums weighted.
+class BinomialRows {
+public:
+    BinomialRows(const SeparableSource& src, const ROI& strip)
+        : m_src(src), m_strip(strip), m_r(src.kernel.radius),
+          m_channels(src.block.nchannels),
+          m_x0(std::max(src.block.region.xbegin, strip.xbegin - m_r)),
+          m_x1(std::min(src.block.region.xend, strip.xend + m_r)),
+          m_col(size_t(m_x1 - m_x0) * m_channels),
+          m_row(size_t(strip.width()) * m_channels), m_weights(size_t(strip.width())),
+          m_means(src.nchannels, src.masked, strip.width())
+    {
+    }
+
+    int64_t row(int y, float* out, std::ptrdiff_t stride)
+    {
+        const ROI& reg = m_src.block.region;
+        const Span ys  = clip_window(y, m_r, reg.ybegin, reg.yend);
+        vertical(y, ys);
+        horizontal();
+        const float* w = m_src.kernel.weights.data();
+        float column_weight = 0.0f;  // what an all-ones channel sums to
+        for (int j = ys.begin; j < ys.end; ++j)
+            column_weight += w[j - y + m_r] * 1.0f;
+        if (!m_src.masked)
+            geometric_weights(column_weight);
+        return m_means.write(m_row.data(), m_weights.data(), out, stride);
+    }
+
+private:
+    // What an all-ones channel sums to at each pixel, in the order the
+    // sums are taken; the same for every pixel whose window is not clipped.
+    void geometric_weights(float column_weight)
+    {
+        const ROI& reg = m_src.block.region;
+        const float* w = m_src.kernel.weights.data();
+        float interior = 0.0f;
+        for (int i = 0; i <= 2 * m_r; ++i)
+            interior += w[i] * column_weight;
+        for (int x = m_strip.xbegin; x < m_strip.xend; ++x) {
+            const Span xs = clip_window(x, m_r, reg.xbegin, reg.xend);
+            float weight  = 0.0f;
+            if (xs.size() == 2 * m_r + 1)
+                weight = interior;
+            else
+                for (int i = xs.begin; i < xs.end; ++i)
+                    weight += w[i - x + m_r] * column_weight;
+            m_weights[size_t(x - m_strip.xbegin)] = weight;
+        }
+    }
+
+    void vertical(int y, Span ys)
+    {
+        const float* w = m_src.kernel.weights.data();
+        const size_t n = m_col.size();
+        float* c       = m_col.data();
+        std::fill(c, c + n, 0.0f);
+        for (int j = ys.begin; j < ys.end; ++j) {
+            const float wj = w[j - y + m_r];
+            const float* p = m_src.block.pixel(m_x0, j);
+            for (size_t i = 0; i < n; ++i)
+                c[i] += wj * p[i];
+        }
+    }
+
+    void horizontal()
+    {
+        const ROI& reg = m_src.block.region;
+        const float* w = m_src.kernel.weights.data();
+        const int C = m_channels, r = m_r;
+        const int in_begin = std::clamp(reg.xbegin + r, m_strip.xbegin, m_strip.xend);
+        const int in_end   = std::clamp(reg.xend - r, in_begin, m_strip.xend);
+        auto edge_pixel = [&](int x) {
+            const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
+            float* o      = m_row.data() + size_t(x - m_strip.xbegin) * C;
+            std::fill(o, o + C, 0.0f);
+            for (int i = xs.begin; i < xs.end; ++i) {
+                const float* v = m_col.data() + size_t(i - m_x0) * C;
+                for (int c = 0; c < C; ++c)
+                    o[c] += w[i - x + r] * v[c];
+            }
+        };
+        for (int x = m_strip.xbegin; x < in_begin; ++x)
+            edge_pixel(x);
+        if (in_end > in_begin) {
+            float* o       = m_row.data() + size_t(in_begin - m_strip.xbegin) * C;
+            const size_t n = size_t(in_end - in_begin) * C;
+            std::fill(o, o + n, 0.0f);
+            for (int i = 0; i <= 2 * r; ++i) {
+                const float wi = w[i];
+                const float* v = m_col.data() + size_t(in_begin - r + i - m_x0) * C;
+                for (size_t k = 0; k < n; ++k)
+                    o[k] += wi * v[k];
+            }
+        }
+        for (int x = in_end; x < m_strip.xend; ++x)
+            edge_pixel(x);
+    }
+
+    const SeparableSource& m_src;
+    ROI m_strip;
+    int m_r, m_channels;
+    int m_x0, m_x1;
+    std::vector<float> m_col;
+    std::vector<float> m_row;
+    std::vector<float> m_weights;
+    RowMeans<float> m_means;
+};
+
+template<class Rows>
+void mean_rows(const SeparableSource& source, const ROI& strip, ResultPixels& result)
+{
+    Rows rows(source, strip);
+    int64_t empty = 0;
+    for (int y = strip.ybegin; y < strip.yend; ++y) {
+        float* out = result.pixel(strip.xbegin, y);
+        empty += rows.row(y, out, result.pixel_stride());
     }
     result.empty_windows += empty;
 }
 
 }  // namespace
 
-bool separable_mean(const char* op, ImageBuf& dst, const ImageBuf& beauty,
-                    const Kernel1D& kernel, int nthreads, ResultPixels& result)
+void separable_mean_strip(const SeparableSource& source, const ROI& strip,
+                          ResultPixels& result)
 {
-    const ROI bounds = beauty.roi();
-    PixelBlock block;
-    ROI region   = separable_source_region(result.roi, kernel, bounds);
-    region.chbegin = result.roi.chbegin;
-    region.chend   = result.roi.chend;
-    if (!load_block(beauty, region, block)) {
-        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
-        return false;
-    }
-    const bool masked = has_nonfinite(block);
-    PixelBlock with_mask;
-    if (masked)
-        with_mask = with_finite_mask(block);
-    const PixelBlock& source = masked ? with_mask : block;
-    const SumOrigin origin { bounds.xbegin, bounds.ybegin };
-    OIIO::ImageBufAlgo::parallel_image(result.roi, nthreads, [&](ROI strip) {
-        mean_strip(source, masked, kernel, origin, strip, result);
-    });
-    return true;
+    if (source.kernel.box)
+        mean_rows<BoxRows>(source, strip, result);
+    else
+        mean_rows<BinomialRows>(source, strip, result);
 }
 
 }  // namespace mcdenoise

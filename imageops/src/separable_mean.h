@@ -1,18 +1,63 @@
-// separable_mean.h: the weighted mean with a separable spatial kernel over a
-// whole ROI: the simple mean and gaussian, and the fast path of every guided
-// weighted-mean filter where the whole window is viable.
+// separable_mean.h: the weighted mean with a separable spatial kernel (box or
+// binomial) over the finite values of each window: the simple mean and
+// gaussian, and the fast path of every guided weighted-mean filter wherever a
+// whole window is viable. Box sums slide in double precision (cost
+// independent of the size); binomial windows run column then row in float
+// SIMD. Sliding sums restart at fixed points, so a pixel's value never
+// depends on the strip or ROI it was computed in.
 #pragma once
 
 #include "operation.h"
-#include "separable_sum.h"
+#include "pixel_block.h"
+
+#include <vector>
 
 namespace mcdenoise {
 
-/// The kernel-weighted mean of the finite values in each pixel's window,
-/// over every pixel and channel of `result.roi`, computed from `beauty` on
-/// `nthreads` threads. Windows with no finite value give 0 and are counted.
+/// The 1D taps of a separable window of side 2 * radius + 1.
+struct Kernel1D {
+    int radius = 0;
+    bool box   = false;         ///< all taps 1: summed with sliding sums
+    std::vector<float> weights; ///< 2 * radius + 1 taps
+};
+
+/// All-ones taps of a box window of side `size`.
+Kernel1D box_kernel(int size);
+
+/// Row `size - 1` of Pascal's triangle, scaled to sum to 1 (the scale
+/// cancels in every weighted mean, and keeps large sizes in range).
+Kernel1D binomial_kernel(int size);
+
+/// The beauty as the separable mean reads it: the pixels the kernel reaches
+/// from the ROI, with a finite mask appended to every pixel when any value
+/// is non-finite.
+struct SeparableSource {
+    Kernel1D kernel;
+    PixelBlock block;
+    int nchannels = 0;  ///< beauty channels (block has twice that when masked)
+    bool masked   = false;
+    int origin_x = 0, origin_y = 0;  ///< the data window's origin: restart anchor
+};
+
+/// Read `beauty` over what `kernel` reaches from `roi`.
 /// Returns false with `dst`'s error set if the pixels cannot be read.
-bool separable_mean(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
-                    const Kernel1D& kernel, int nthreads, ResultPixels& result);
+bool load_separable_source(const char* op, OIIO::ImageBuf& dst,
+                           const OIIO::ImageBuf& beauty, const OIIO::ROI& roi,
+                           Kernel1D kernel, int nthreads, SeparableSource& source);
+
+/// Use `block` (already read, covering what `kernel` reaches from `roi`
+/// within `bounds`, the data window) as a separable source.
+void make_separable_source(PixelBlock block, const OIIO::ROI& bounds, Kernel1D kernel,
+                           int nthreads, SeparableSource& source);
+
+/// The block region a separable source needs to produce `roi`.
+OIIO::ROI separable_source_region(const OIIO::ROI& roi, const Kernel1D& kernel,
+                                  const OIIO::ROI& bounds);
+
+/// The kernel-weighted mean of the finite values in each pixel's window, for
+/// every pixel and channel of `strip`, into `result`. Windows with no finite
+/// value give 0 and are counted.
+void separable_mean_strip(const SeparableSource& source, const OIIO::ROI& strip,
+                          ResultPixels& result);
 
 }  // namespace mcdenoise

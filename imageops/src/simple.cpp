@@ -23,19 +23,23 @@ struct AllViable {
 bool separable_filter(const char* op, ImageBuf& dst, const ImageBuf& beauty,
                       int size, Kernel1D (*make_kernel)(int), ROI roi, int nthreads)
 {
-    if (!check_window_op(op, dst, beauty, size, roi))
+    SeparableSource source;
+    ResultPixels result;
+    if (!check_window_op(op, dst, beauty, size, roi)
+        || !load_separable_source(op, dst, beauty, roi, make_kernel(size), nthreads, source)
+        || !begin_result(op, dst, beauty, { &beauty }, roi, result))
         return false;
-    ResultPixels result(roi);
-    return separable_mean(op, dst, beauty, make_kernel(size), nthreads, result)
-           && write_result(op, dst, beauty, result);
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+        separable_mean_strip(source, strip, result);
+    });
+    return finish_result(op, dst, result);
 }
 
 }  // namespace
 
 bool mean(ImageBuf& dst, const ImageBuf& beauty, int size, ROI roi, int nthreads)
 {
-    return separable_filter("mean", dst, beauty, size,
-                            box_kernel, roi, nthreads);
+    return separable_filter("mean", dst, beauty, size, box_kernel, roi, nthreads);
 }
 
 ImageBuf mean(const ImageBuf& beauty, int size, ROI roi, int nthreads)
@@ -45,8 +49,7 @@ ImageBuf mean(const ImageBuf& beauty, int size, ROI roi, int nthreads)
 
 bool gaussian(ImageBuf& dst, const ImageBuf& beauty, int size, ROI roi, int nthreads)
 {
-    return separable_filter("gaussian", dst, beauty, size,
-                            binomial_kernel, roi, nthreads);
+    return separable_filter("gaussian", dst, beauty, size, binomial_kernel, roi, nthreads);
 }
 
 ImageBuf gaussian(const ImageBuf& beauty, int size, ROI roi, int nthreads)
@@ -57,16 +60,16 @@ ImageBuf gaussian(const ImageBuf& beauty, int size, ROI roi, int nthreads)
 
 bool median(ImageBuf& dst, const ImageBuf& beauty, int size, ROI roi, int nthreads)
 {
-    if (!check_window_op("median", dst, beauty, size, roi))
-        return false;
     MedianSource source;
-    if (!load_median_source("median", dst, beauty, roi, size, source))
+    ResultPixels result;
+    if (!check_window_op("median", dst, beauty, size, roi)
+        || !load_median_source("median", dst, beauty, roi, size, nthreads, source)
+        || !begin_result("median", dst, beauty, { &beauty }, roi, result))
         return false;
-    ResultPixels result(roi);
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         median_strip(source, AllViable(), strip, result);
     });
-    return write_result("median", dst, beauty, result);
+    return finish_result("median", dst, result);
 }
 
 ImageBuf median(const ImageBuf& beauty, int size, ROI roi, int nthreads)
