@@ -124,6 +124,9 @@ const std::vector<OptionSpec>& option_table()
           } },
         { "skip-existing", {}, "Sequences", "Skip frames whose outputs all exist already.",
           [](Options& o, const std::vector<std::string>&) { o.skip_existing = true; } },
+        { "compare", { "REF" }, "Diagnostics",
+          "Print relMSE, PSNR and SSIM of the result against REF's beauty (a pattern for sequences).",
+          [](Options& o, const std::vector<std::string>& a) { o.compare = a[0]; } },
         { "preview", { "FILE" }, "Diagnostics",
           "Write a display-referred side-by-side image: input | result (| reference with --compare).",
           [](Options& o, const std::vector<std::string>& a) { o.preview = a[0]; } },
@@ -168,22 +171,27 @@ std::string nearest(std::string_view typed, const std::vector<std::string>& cand
     std::string best;
     size_t best_distance = std::string::npos;
     for (const std::string& candidate : candidates) {
-        // Levenshtein distance, one row at a time.
-        std::vector<size_t> row(candidate.size() + 1);
-        for (size_t j = 0; j < row.size(); ++j)
-            row[j] = j;
-        for (size_t i = 1; i <= typed.size(); ++i) {
-            size_t diagonal = row[0];
-            row[0] = i;
-            for (size_t j = 1; j <= candidate.size(); ++j) {
-                size_t above = row[j];
-                size_t substitute = diagonal + (typed[i - 1] == candidate[j - 1] ? 0 : 1);
-                row[j] = std::min({ above + 1, row[j - 1] + 1, substitute });
-                diagonal = above;
+        // Optimal string alignment distance: Levenshtein plus adjacent
+        // transpositions, so "--medain" is one step from "--median".
+        size_t rows = typed.size() + 1;
+        size_t cols = candidate.size() + 1;
+        std::vector<size_t> d(rows * cols);
+        for (size_t i = 0; i < rows; ++i)
+            d[i * cols] = i;
+        for (size_t j = 0; j < cols; ++j)
+            d[j] = j;
+        for (size_t i = 1; i < rows; ++i)
+            for (size_t j = 1; j < cols; ++j) {
+                size_t cost = typed[i - 1] == candidate[j - 1] ? 0 : 1;
+                size_t best_here = std::min({ d[(i - 1) * cols + j] + 1, d[i * cols + j - 1] + 1,
+                                              d[(i - 1) * cols + j - 1] + cost });
+                if (i > 1 && j > 1 && typed[i - 1] == candidate[j - 2] && typed[i - 2] == candidate[j - 1])
+                    best_here = std::min(best_here, d[(i - 2) * cols + j - 2] + 1);
+                d[i * cols + j] = best_here;
             }
-        }
-        if (row.back() < best_distance) {
-            best_distance = row.back();
+        size_t distance = d.back();
+        if (distance < best_distance) {
+            best_distance = distance;
             best = candidate;
         }
     }

@@ -3,6 +3,7 @@
 #include "frame.h"
 
 #include "channels.h"
+#include "compare.h"
 #include "error.h"
 #include "frames.h"
 #include "guides.h"
@@ -139,8 +140,15 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         if (options.verbose)
             std::printf("mcdtool: -o %s\n", path.c_str());
     }
+    ImageBuf reference;
+    if (!options.compare.empty()) {
+        std::string reference_path = path_of(options.compare);
+        reference = reference_beauty(reference_path, options, files);
+        print_comparison(reference_path, before, current, reference, options);
+    }
     if (!options.preview.empty())
-        write_preview(path_of(options.preview), before, current, nullptr, options, batch);
+        write_preview(path_of(options.preview), before, current,
+                      options.compare.empty() ? nullptr : &reference, options, batch);
     batch.commit();
     return FrameOutcome::written;
 }

@@ -62,8 +62,11 @@ ImageBuf to_display(const ImageBuf& canvas, const Options& options)
 {
     bool have_config = !options.ocio_config.empty() || std::getenv("OCIO");
     OIIO::ColorConfig config(options.ocio_config);
-    if (config.has_error())
-        throw RunError(format("--ocio-config : cannot load '{}': {}", options.ocio_config,
+    if (!have_config)
+        config.geterror();  // no config asked for: the built-in transforms serve
+    else if (config.has_error())
+        throw RunError(format("--ocio-config : cannot load '{}': {}",
+                              options.ocio_config.empty() ? "$OCIO" : options.ocio_config,
                               one_line(config.geterror())));
     ImageBuf display;
     bool ok = false;

@@ -1,0 +1,59 @@
+// compare.cpp: reading the reference and printing the metrics.
+#include "compare.h"
+
+#include "channels.h"
+#include "error.h"
+
+#include <mcdenoise/metrics.h>
+
+#include <OpenImageIO/strutil.h>
+
+#include <cstdio>
+
+namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
+
+namespace {
+
+/// One library call: every metric of `image` against `reference`.
+mcdenoise::ImageComparison measure(const ImageBuf& image, const ImageBuf& reference, int nthreads)
+{
+    mcdenoise::ImageComparison metrics = mcdenoise::compare_images(image, reference, {}, nthreads);
+    if (!metrics.ok)
+        throw RunError(format("--compare : {}", one_line(metrics.error)));
+    return metrics;
+}
+
+/// "relMSE 0.01234  MSE 0.000567  PSNR 32.47 dB  SSIM 0.9312".
+std::string metrics_text(const mcdenoise::ImageComparison& m)
+{
+    std::string text = format("relMSE {:.6g}  MSE {:.6g}  PSNR {:.2f} dB  SSIM {:.4f}", m.rel_mse, m.mse,
+                              m.psnr, m.ssim);
+    if (m.nonfinite > 0)
+        text += format("  ({} non-finite pixels left out)", m.nonfinite);
+    return text;
+}
+
+}  // namespace
+
+ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files)
+{
+    const ImageBuf& reference = files.get(path, "--compare");
+    Discovery found = discover_channels(reference.spec(), options.beauty_channels, path);
+    return extract_channels(reference, found.beauty);
+}
+
+void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
+                      const ImageBuf& reference, const Options& options)
+{
+    if (reference.nchannels() != after.nchannels())
+        throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the result has {}", path,
+                              reference.nchannels(), after.nchannels()));
+    std::string input_metrics = metrics_text(measure(before, reference, options.threads));
+    std::string result_metrics = metrics_text(measure(after, reference, options.threads));
+    std::printf("mcdtool: compare %s\n  input   %s\n  result  %s\n", path.c_str(), input_metrics.c_str(),
+                result_metrics.c_str());
+}
+
+}  // namespace mcdtool

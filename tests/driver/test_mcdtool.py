@@ -1,0 +1,379 @@
+"""mcdtool driver tests: the examples of docs/mcdtool.md and every bad
+input. Each test_* function is one CTest test (tests/driver/CMakeLists.txt)."""
+import os
+
+import numpy as np
+import OpenImageIO as oiio
+import pytest
+
+from conftest import (channel, gaussian_reference, median_reference, noisy_scene, read_image,
+                      require_command, run, write_image)
+
+BEAUTY = ["R", "G", "B"]
+
+
+def beauty_of(pixels, spec, names=BEAUTY):
+    return np.stack([channel(pixels, spec, n) for n in names], axis=2)
+
+
+def assert_no_outputs(directory, before):
+    """No new file (output or temp) appeared in `directory`."""
+    assert sorted(os.listdir(directory)) == sorted(before)
+
+
+# --- examples -------------------------------------------------------------
+
+def test_median_gaussian_chain(testrender_exr, tmp_path):
+    """mcdtool render.exr --median 7 --gaussian 3 -o clean.exr"""
+    r = run(testrender_exr, "--median", 7, "--gaussian", 3, "-o", tmp_path / "clean.exr")
+    assert r.code == 0, r
+    src, src_spec = read_image(testrender_exr)
+    out, out_spec = read_image(tmp_path / "clean.exr")
+    expected = gaussian_reference(median_reference(beauty_of(src, src_spec), 7), 3)
+    np.testing.assert_allclose(beauty_of(out, out_spec), expected, rtol=2e-3, atol=2e-3)
+    # Every other channel is kept bit for bit, with the metadata and formats.
+    assert sorted(out_spec.channelnames) == sorted(src_spec.channelnames)
+    for name in src_spec.channelnames:
+        if name not in BEAUTY:
+            np.testing.assert_array_equal(channel(out, out_spec, name), channel(src, src_spec, name))
+    assert out_spec.format == oiio.HALF
+    assert out_spec.get_string_attribute("compression") == "piz"
+    assert out_spec.get_string_attribute("mcd:shot") == "sq010_sh020"
+
+
+def test_object_median_chain(testrender_exr, tmp_path):
+    """mcdtool render.exr --object-median 7 --gaussian 3 -o clean.exr"""
+    require_command("--object-median")
+    r = run(testrender_exr, "--object-median", 7, "--gaussian", 3, "-o", tmp_path / "clean.exr")
+    assert r.code == 0, r
+    out, spec = read_image(tmp_path / "clean.exr")
+    ids = channel(out, spec, "id")
+    left = beauty_of(out, spec)[ids == 0]
+    right = beauty_of(out, spec)[ids == 1]
+    # Objects are filtered apart: the two sides keep their own levels.
+    assert abs(left.mean() - 0.2) < 0.1 and abs(right.mean() - 0.8) < 0.1
+
+
+def test_separate_aov_files(tmp_path):
+    """mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N ..."""
+    beauty, ids, normal, depth = noisy_scene()
+    write_image(tmp_path / "beauty.exr", beauty, BEAUTY)
+    write_image(tmp_path / "ids.exr", ids[..., None], ["Y"])
+    write_image(tmp_path / "render.exr", np.concatenate([beauty, normal], axis=2),
+                BEAUTY + ["N.X", "N.Y", "N.Z"])
+    command = "--normal-mean" if "--normal-mean" in _commands_cached() else "--median"
+    r = run(tmp_path / "beauty.exr", "--aov", "id=" + str(tmp_path / "ids.exr"),
+            "--aov", "normal=" + str(tmp_path / "render.exr") + ":N", "-v", command, 5,
+            "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
+    assert f"id       <- {tmp_path / 'ids.exr'}: Y" in r.out
+    assert f"normal   <- {tmp_path / 'render.exr'}: N.X,N.Y,N.Z" in r.out
+    assert (tmp_path / "out.exr").exists()
+
+
+_COMMANDS = None
+
+
+def _commands_cached():
+    global _COMMANDS
+    if _COMMANDS is None:
+        from conftest import commands
+        _COMMANDS = commands()
+    return _COMMANDS
+
+
+def test_dof(testrender_exr, tmp_path):
+    """mcdtool render.exr --dof 10 0 -o out.exr"""
+    require_command("--dof")
+    r = run(testrender_exr, "--dof", 10, 0, "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
+    assert (tmp_path / "out.exr").exists()
+
+
+def test_sequence(tmp_path):
+    """mcdtool 'shot/beauty.####.exr' --frames 1-3 --median 7 -o 'clean/beauty.####.exr'"""
+    (tmp_path / "shot").mkdir()
+    (tmp_path / "clean").mkdir()
+    for frame in (1, 2, 3):
+        beauty, *_ = noisy_scene(seed=frame)
+        write_image(tmp_path / "shot" / f"beauty.{frame:04d}.exr", beauty, BEAUTY)
+    r = run("shot/beauty.####.exr", "--frames", "1-3", "--median", 7, "-o", "clean/beauty.####.exr",
+            cwd=tmp_path)
+    assert r.code == 0, r
+    assert sorted(os.listdir(tmp_path / "clean")) == [f"beauty.{f:04d}.exr" for f in (1, 2, 3)]
+    # Not a terminal: no progress line.
+    assert r.err == ""
+    # printf style and a frame list with a step.
+    r = run("shot/beauty.%04d.exr", "--frames", "1-3x2", "--median", 3, "-o", "clean/step.%04d.exr",
+            cwd=tmp_path)
+    assert r.code == 0, r
+    assert (tmp_path / "clean/step.0001.exr").exists() and (tmp_path / "clean/step.0003.exr").exists()
+    assert not (tmp_path / "clean/step.0002.exr").exists()
+    r = run("shot/beauty.####.exr", "--frames", "1,3", "--median", 3, "-o", "clean/list.####.exr",
+            cwd=tmp_path)
+    assert r.code == 0, r
+    assert sorted(p for p in os.listdir(tmp_path / "clean") if p.startswith("list")) == [
+        "list.0001.exr", "list.0003.exr"]
+
+
+def test_sequence_frame_error_keeps_other_frames(tmp_path):
+    """A missing frame is reported with its number; the others are written; exit 1."""
+    for frame in (1, 3):
+        beauty, *_ = noisy_scene(seed=frame)
+        write_image(tmp_path / f"beauty.{frame:04d}.exr", beauty, BEAUTY)
+    r = run("beauty.####.exr", "--frames", "1-3", "--median", 3, "-o", "clean.####.exr", cwd=tmp_path)
+    assert r.code == 1, r
+    assert "frame 2:" in r.err and "beauty.0002.exr" in r.err
+    assert (tmp_path / "clean.0001.exr").exists() and (tmp_path / "clean.0003.exr").exists()
+    assert not (tmp_path / "clean.0002.exr").exists()
+
+
+def test_skip_existing(tmp_path):
+    for frame in (1, 2):
+        beauty, *_ = noisy_scene(seed=frame)
+        write_image(tmp_path / f"beauty.{frame:04d}.exr", beauty, BEAUTY)
+    (tmp_path / "clean.0001.exr").write_bytes(b"placeholder")
+    r = run("beauty.####.exr", "--frames", "1-2", "--skip-existing", "--median", 3, "-o", "clean.####.exr",
+            cwd=tmp_path)
+    assert r.code == 0, r
+    assert (tmp_path / "clean.0001.exr").read_bytes() == b"placeholder"
+    assert (tmp_path / "clean.0002.exr").exists()
+
+
+def test_compare(testrender_exr, tmp_path):
+    """mcdtool render.exr --median 7 --compare reference.exr"""
+    beauty, ids, normal, depth = noisy_scene()
+    clean = np.where(ids[..., None] > 0, 0.8, 0.2) * np.ones_like(beauty)
+    write_image(tmp_path / "reference.exr", clean, BEAUTY, fmt="float")
+    r = run(testrender_exr, "--median", 7, "--compare", tmp_path / "reference.exr")
+    assert r.code == 0, r
+    lines = [line for line in r.out.splitlines() if "relMSE" in line]
+    assert len(lines) == 2 and all("PSNR" in l and "SSIM" in l for l in lines), r
+    before, after = (float(l.split("relMSE")[1].split()[0]) for l in lines)
+    assert after < before
+
+
+def test_preview(testrender_exr, tmp_path):
+    """mcdtool render.exr --median 7 -o clean.exr --preview before_after.png"""
+    r = run(testrender_exr, "--median", 7, "-o", tmp_path / "clean.exr", "--preview",
+            tmp_path / "before_after.png")
+    assert r.code == 0, r
+    pixels, spec = read_image(tmp_path / "before_after.png")
+    assert (spec.width, spec.height, spec.nchannels) == (80, 32, 3)
+    assert spec.format == oiio.UINT8
+    # With --compare, the reference is the third panel.
+    write_image(tmp_path / "reference.exr", np.full((32, 40, 3), 0.5, np.float32), BEAUTY)
+    r = run(testrender_exr, "--median", 7, "--compare", tmp_path / "reference.exr", "--preview",
+            tmp_path / "three.png")
+    assert r.code == 0, r
+    pixels, spec = read_image(tmp_path / "three.png")
+    assert spec.width == 120
+    # Plain sRGB without a config: linear 0.5 displays as ~0.735.
+    assert abs(pixels[10, 100, 0] - 0.735) < 0.01
+
+
+OCIO_CONFIG = """ocio_profile_version: 2
+roles:
+  default: linear
+  scene_linear: linear
+displays:
+  TestDisplay:
+    - !<View> {name: Gamma, colorspace: gamma_display}
+    - !<View> {name: Raw, colorspace: linear}
+active_displays: []
+active_views: []
+colorspaces:
+  - !<ColorSpace>
+    name: linear
+    isdata: false
+  - !<ColorSpace>
+    name: gamma_display
+    isdata: false
+    from_scene_reference: !<ExponentTransform> {value: 2.0, direction: inverse}
+"""
+
+
+def test_preview_ocio(tmp_path):
+    write_image(tmp_path / "flat.exr", np.full((8, 8, 3), 0.25, np.float32), BEAUTY)
+    (tmp_path / "test.ocio").write_text(OCIO_CONFIG)
+    r = run(tmp_path / "flat.exr", "--median", 3, "--preview", tmp_path / "gamma.png", "--ocio-config",
+            tmp_path / "test.ocio")
+    assert r.code == 0, r
+    assert abs(read_image(tmp_path / "gamma.png")[0][4, 4, 0] - 0.5) < 0.01  # 0.25 ** (1/2)
+    r = run(tmp_path / "flat.exr", "--median", 3, "--preview", tmp_path / "raw.png", "--view", "Raw",
+            env={"OCIO": str(tmp_path / "test.ocio")})
+    assert r.code == 0, r
+    assert abs(read_image(tmp_path / "raw.png")[0][4, 4, 0] - 0.25) < 0.01
+
+
+def test_cycles_multilayer_discovery(cycles_exr, tmp_path):
+    r = run(cycles_exr, "-v", "--median", 5, "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
+    assert "beauty   <- " in r.out and "My Layer.Combined.R,My Layer.Combined.G,My Layer.Combined.B" in r.out
+    assert "id       <- " in r.out and ": My Layer.IndexOB.X" in r.out
+    assert "normal   <- " in r.out and ": My Layer.Normal.X,My Layer.Normal.Y,My Layer.Normal.Z" in r.out
+    assert "depth    <- " in r.out and ": My Layer.Depth.Z" in r.out
+    assert "albedo   <- " in r.out and "My Layer.Denoising Albedo.R" in r.out
+    src, src_spec = read_image(cycles_exr)
+    out, out_spec = read_image(tmp_path / "out.exr")
+    assert out_spec.format == oiio.FLOAT and out_spec.get_string_attribute("compression") == "zip"
+    names = [f"My Layer.Combined.{c}" for c in "RGB"]
+    expected = median_reference(beauty_of(src, src_spec, names), 5)
+    np.testing.assert_allclose(beauty_of(out, out_spec, names), expected, rtol=1e-6, atol=1e-6)
+    for name in src_spec.channelnames:
+        if name not in names:  # alpha, depth 1e10 and every other pass pass through
+            np.testing.assert_array_equal(channel(out, out_spec, name), channel(src, src_spec, name))
+
+
+def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
+    r = run(cycles_exr, "--beauty", "My Layer.Combined", "--aov", f"normal={cycles_exr}:My Layer.Denoising Normal",
+            "-v", "--median", 3, "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
+    assert "My Layer.Combined.R,My Layer.Combined.G,My Layer.Combined.B,My Layer.Combined.A" in r.out
+    assert "My Layer.Denoising Normal.X,My Layer.Denoising Normal.Y,My Layer.Denoising Normal.Z" in r.out
+
+
+def test_data_format_and_compression(testrender_exr, tmp_path):
+    r = run(testrender_exr, "--median", 3, "-d", "float", "--compression", "zip", "-o", tmp_path / "f.exr")
+    assert r.code == 0, r
+    spec = read_image(tmp_path / "f.exr")[1]
+    assert spec.format == oiio.FLOAT and spec.get_string_attribute("compression") == "zip"
+
+
+def test_runstats_and_threads(testrender_exr, tmp_path):
+    r = run(testrender_exr, "--threads", 1, "--median", 3, "--gaussian", 3, "-o", tmp_path / "o.exr",
+            "--runstats")
+    assert r.code == 0, r
+    for key in ("read time", "write time", "--median", "--gaussian", "peak memory"):
+        assert key in r.out, r
+
+
+def test_force_overwrites_input(testrender_exr, tmp_path):
+    r = run(testrender_exr, "--median", 3, "-o", testrender_exr)
+    assert r.code == 1 and "--force" in r.err, r
+    before = testrender_exr.read_bytes()
+    r = run(testrender_exr, "--median", 3, "-o", testrender_exr, "--force")
+    assert r.code == 0, r
+    assert testrender_exr.read_bytes() != before
+
+
+def test_help_lists_every_command():
+    r = run("--help")
+    assert r.code == 0
+    for name in ("--mean SIZE", "--median SIZE", "--gaussian SIZE", "--aov ROLE=FILE[:CHANNELS]"):
+        assert name in r.out
+
+
+# --- bad input: one line naming the culprit, exit 1 (2 for usage), no output
+
+def check_failure(result, code, *needles):
+    assert result.code == code, result
+    lines = result.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("mcdtool ERROR: "), result
+    for needle in needles:
+        assert needle in lines[0], result
+
+
+def test_bad_missing_file(tmp_path):
+    r = run(tmp_path / "nope.exr", "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "nope.exr", "no such file")
+    assert_no_outputs(tmp_path, [])
+
+
+def test_bad_truncated_exr(testrender_exr, tmp_path):
+    data = testrender_exr.read_bytes()
+    bad = tmp_path / "truncated.exr"
+    bad.write_bytes(data[:len(data) // 2])
+    existing = os.listdir(tmp_path)
+    r = run(bad, "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "truncated.exr")
+    assert_no_outputs(tmp_path, existing)
+    (tmp_path / "garbage.exr").write_bytes(b"not an exr at all")
+    r = run(tmp_path / "garbage.exr", "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "garbage.exr")
+    assert not (tmp_path / "out.exr").exists()
+
+
+def test_bad_missing_channel(testrender_exr, tmp_path):
+    existing = os.listdir(tmp_path)
+    r = run(testrender_exr, "--aov", f"normal={testrender_exr}:Nrm", "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "'Nrm'", "channels: R,G,B,A")
+    assert_no_outputs(tmp_path, existing)
+    r = run(testrender_exr, "--beauty", "diffuse", "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "--beauty", "'diffuse'", "channels: ")
+    assert_no_outputs(tmp_path, existing)
+
+
+def test_bad_guide_channel_count(testrender_exr, tmp_path):
+    existing = os.listdir(tmp_path)
+    r = run(testrender_exr, "--aov", f"id={testrender_exr}:N", "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "id guide needs 1 channel", "N.X,N.Y,N.Z")
+    assert_no_outputs(tmp_path, existing)
+
+
+def test_bad_data_window(tmp_path):
+    beauty, ids, *_ = noisy_scene()
+    write_image(tmp_path / "beauty.exr", beauty, BEAUTY)
+    write_image(tmp_path / "ids.exr", ids[4:, 4:, None], ["Y"], origin=(4, 4))
+    existing = os.listdir(tmp_path)
+    r = run(tmp_path / "beauty.exr", "--aov", "id=" + str(tmp_path / "ids.exr"), "--median", 3,
+            "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "ids.exr", "does not cover the beauty's data window")
+    assert_no_outputs(tmp_path, existing)
+
+
+def test_bad_missing_guide(tmp_path):
+    require_command("--object-median")
+    beauty, *_ = noisy_scene()
+    write_image(tmp_path / "beauty.exr", beauty, BEAUTY)
+    r = run(tmp_path / "beauty.exr", "--object-median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "--object-median", "id guide", "--aov id=")
+    assert not (tmp_path / "out.exr").exists()
+
+
+@pytest.mark.parametrize("size", [6, 257, 0])
+def test_bad_kernel_size(testrender_exr, tmp_path, size):
+    existing = os.listdir(tmp_path)
+    r = run(testrender_exr, "--median", size, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "mcdtool ERROR: --median : ")
+    assert_no_outputs(tmp_path, existing)
+
+
+def test_bad_unknown_command(testrender_exr, tmp_path):
+    r = run(testrender_exr, "--medain", 7, "-o", tmp_path / "out.exr")
+    check_failure(r, 2, "'--medain'", "did you mean '--median'")
+    r = run(testrender_exr, "--aov", "normals=x.exr", "-o", tmp_path / "out.exr")
+    check_failure(r, 2, "'normals'", "did you mean 'normal'")
+    assert not (tmp_path / "out.exr").exists()
+
+
+def test_bad_missing_argument(testrender_exr, tmp_path):
+    r = run(testrender_exr, "--median")
+    check_failure(r, 2, "--median", "missing argument", "--median SIZE")
+    r = run(testrender_exr, "--median", "--gaussian", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 2, "--median", "missing argument")
+    r = run(testrender_exr, "--median", "seven", "-o", tmp_path / "out.exr")
+    check_failure(r, 2, "--median", "SIZE must be an integer", "'seven'")
+    r = run(testrender_exr, "--median", 3, "-o")
+    check_failure(r, 2, "-o", "missing argument")
+    r = run(testrender_exr, "--frames", "1-x", "--median", 3)
+    check_failure(r, 2, "--frames", "1-x")
+    assert not (tmp_path / "out.exr").exists()
+
+
+def test_bad_unwritable_output(testrender_exr, tmp_path):
+    existing = os.listdir(tmp_path)
+    r = run(testrender_exr, "--median", 3, "-o", tmp_path / "no_such_dir" / "out.exr")
+    check_failure(r, 1, "no_such_dir/out.exr")
+    assert_no_outputs(tmp_path, existing)
+    (tmp_path / "a_file").write_text("x")
+    r = run(testrender_exr, "--median", 3, "-o", tmp_path / "a_file" / "out.exr")
+    check_failure(r, 1, "a_file/out.exr")
+
+
+def test_bad_later_failure_leaves_no_earlier_output(testrender_exr, tmp_path):
+    existing = os.listdir(tmp_path)
+    r = run(testrender_exr, "--median", 3, "-o", tmp_path / "first.exr", "--median", 4,
+            "-o", tmp_path / "second.exr")
+    check_failure(r, 1, "--median : ")
+    assert_no_outputs(tmp_path, existing)
