@@ -26,23 +26,26 @@ int Scene::add(const Shape& shape, int material, int id)
 
 bool Scene::intersect(const Ray& ray, Hit& hit, double t_max) const
 {
-    bool found = false;
+    int nearest = -1;
     double closest = t_max;
     for (size_t i = 0; i < objects.size(); ++i) {
-        if (objects[i].shape.intersect(ray, ray_epsilon, closest, hit)) {
-            closest = hit.t;
-            hit.object = int(i);
-            found = true;
+        const double t = objects[i].shape.hit_distance(ray, ray_epsilon, closest);
+        if (t > 0) {
+            closest = t;
+            nearest = int(i);
         }
     }
-    return found;
+    if (nearest < 0)
+        return false;
+    objects[size_t(nearest)].shape.surface(ray, closest, hit);
+    hit.object = nearest;
+    return true;
 }
 
 bool Scene::occluded(const Ray& ray, double t_max) const
 {
-    Hit scratch;
     for (const Object& o : objects)
-        if (o.shape.intersect(ray, ray_epsilon, t_max, scratch))
+        if (o.shape.hit_distance(ray, ray_epsilon, t_max) > 0)
             return true;
     return false;
 }

@@ -29,6 +29,8 @@ struct Shape {
     Vec3 corner, edge_u, edge_v;
     Vec3 quad_normal;
     double quad_area = 0;
+    Vec3 quad_w;                  ///< cross(edge_u, edge_v) / |cross(edge_u, edge_v)|^2
+    double edge_u_len = 0, edge_v_len = 0;
     // box: center, half extents, rotation about +y (cos, sin)
     Vec3 half_size;
     double cos_y = 1, sin_y = 0;
@@ -37,8 +39,13 @@ struct Shape {
     static Shape quad(const Vec3& corner, const Vec3& edge_u, const Vec3& edge_v);
     static Shape box(const Vec3& center, const Vec3& half_size, double rotate_y_degrees);
 
-    /// Nearest hit with t in (t_min, t_max); fills t, position, normal, u, v.
-    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit) const;
+    /// Distance to the nearest hit with t in (t_min, t_max), or 0 for none.
+    /// Cheap: the surface attributes are computed by `surface` for the one
+    /// hit that turns out nearest.
+    double hit_distance(const Ray& ray, double t_min, double t_max) const;
+
+    /// Fill position, normal, u, v of the hit at distance `t` along `ray`.
+    void surface(const Ray& ray, double t, Hit& hit) const;
 };
 
 }  // namespace testrender
