@@ -84,10 +84,11 @@ void mirrors(Scene& s)
     add_room(s, { -2, 0, -2 }, { 2, 2.5, 2.2 }, grey, grey, grey, cool, cool, warm, 1, true);
     add_panel_light(s, { 0, 2.499, 0 }, 0.6, 0.6, light, 7);
     s.add(Shape::sphere({ 0, 0.5, -0.6 }, 0.5), mirror, 10);
-    // flat mirrors: on the left and right walls turned towards the room's
-    // middle, and one on the back wall
-    s.add(facing_quad({ -1.95, 0.2, -1.7 }, { 0.35, 0, 1.3 }, { 0, 1.5, 0 }, { 1, 0, 0 }), mirror, 11);
-    s.add(facing_quad({ 1.95, 0.2, -1.7 }, { -0.35, 0, 1.3 }, { 0, 1.5, 0 }, { -1, 0, 0 }), mirror,
+    // flat mirrors: across the two back corners, turned towards the room's
+    // middle (each shows the objects on the other side), and one on the back wall
+    s.add(facing_quad({ -1.95, 0.05, -0.8 }, { 0.8, 0, -1.15 }, { 0, 1.5, 0 }, { 1, 0, 1 }), mirror,
+          11);
+    s.add(facing_quad({ 1.95, 0.05, -0.8 }, { -0.8, 0, -1.15 }, { 0, 1.5, 0 }, { -1, 0, 1 }), mirror,
           12);
     s.add(facing_quad({ -0.9, 1.15, -1.98 }, { 1.8, 0, 0 }, { 0, 1.0, 0 }, { 0, 0, 1 }), mirror, 13);
     s.add(Shape::sphere({ -1.1, 0.35, 0.4 }, 0.35), red, 20);
@@ -102,8 +103,8 @@ void mirrors(Scene& s)
 
 void textured(Scene& s)
 {
-    s.description = "high-frequency checker floor and noise- and checker-textured objects "
-                    "under a sky";
+    s.description = "high-frequency checker floor, noise- and checker-textured objects and a "
+                    "glass sphere under a sky";
     const int floor = s.add_material(
         Material::diffuse(Texture::checker({ 0.85, 0.85, 0.8 }, { 0.08, 0.08, 0.1 }, 8)));
     const int noise = s.add_material(
@@ -115,12 +116,14 @@ void textured(Scene& s)
     const int glossy = s.add_material(Material::glossy(
         Texture::checker({ 0.5, 0.3, 0.1 }, { 0.1, 0.05, 0.02 }, 16), { 0.2, 0.2, 0.2 }, 0.2));
     const int light = s.add_material(Material::emitter({ 12, 11, 10 }));
+    const int glass = s.add_material(Material::glass(1.5));
     s.add(facing_quad({ -10, 0, -10 }, { 20, 0, 0 }, { 0, 0, 20 }, { 0, 1, 0 }), floor, 1);
     add_panel_light(s, { 1.5, 4, 1.5 }, 1.0, 1.0, light, 2);
     s.add(Shape::sphere({ -0.9, 0.5, 0 }, 0.5), noise, 3);
     s.add(Shape::sphere({ 0.5, 0.35, 0.8 }, 0.35), fine, 4);
     s.add(Shape::box({ 0.7, 0.45, -0.6 }, { 0.45, 0.45, 0.45 }, 35), boxtex, 5);
     s.add(Shape::sphere({ -0.2, 0.25, 1.3 }, 0.25), glossy, 6);
+    s.add(Shape::sphere({ 0.55, 0.22, 1.9 }, 0.22), glass, 7);  // refracts the checker floor
     s.background = { 0.35, 0.45, 0.6 };
     s.camera.eye = { 0, 1.3, 3.8 };
     s.camera.look_at = { 0, 0.3, 0 };
