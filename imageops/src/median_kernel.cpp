@@ -1,11 +1,12 @@
-// median_kernel.cpp: the unrolled SIMD median networks and in-place selection.
+// median_kernel.cpp: the unrolled SIMD median networks (GCC vector types, an
+// AVX-512 build of the 16-lane kernels picked at run time) and in-place
+// selection.
 #include "median_kernel.h"
 
 #include "median_network.h"
 
-#include <OpenImageIO/simd.h>
-
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 namespace mcdenoise {
@@ -22,47 +23,101 @@ float median_in_place(float* values, int n)
 
 namespace {
 
-using OIIO::simd::vfloat8;
+#define MCD_INLINE inline __attribute__((always_inline))
+
+// GCC vector types (a dependent vector_size in an alias template is
+// ignored, so each width is spelled out).
+typedef float Vec8 __attribute__((vector_size(8 * sizeof(float))));
+typedef float Vec16 __attribute__((vector_size(16 * sizeof(float))));
+template<int Lanes>
+struct VecOf;
+template<>
+struct VecOf<8> {
+    using type = Vec8;
+};
+template<>
+struct VecOf<16> {
+    using type = Vec16;
+};
+template<int Lanes>
+using Vec = typename VecOf<Lanes>::type;
+static_assert(sizeof(Vec<8>) == 8 * sizeof(float) && sizeof(Vec<16>) == 16 * sizeof(float));
 
 template<int K>
 struct WindowNet {
     static constexpr auto net = network::build_median_net<K * K>();
 };
 
-template<int K, size_t... I>
-inline void run_ops(vfloat8* v, std::index_sequence<I...>)
+template<int Lanes>
+MCD_INLINE void compare_exchange(Vec<Lanes>* v, const network::Op& op)
+{
+    const Vec<Lanes> a = v[op.a], b = v[op.b];
+    const auto less    = a < b;
+    v[op.to_min]       = less ? a : b;
+    v[op.to_max]       = less ? b : a;
+}
+
+template<int K, int Lanes, size_t... I>
+MCD_INLINE void run_ops(Vec<Lanes>* v, std::index_sequence<I...>)
 {
     constexpr auto& net = WindowNet<K>::net;
-    auto step = [v](const network::Op& op) {
-        const vfloat8 a = v[op.a], b = v[op.b];
-        v[op.to_min] = OIIO::simd::min(a, b);
-        v[op.to_max] = OIIO::simd::max(a, b);
-    };
-    (step(net.ops[I]), ...);
+    (compare_exchange<Lanes>(v, net.ops[I]), ...);
+}
+
+template<int K, int Lanes>
+MCD_INLINE void window_medians(const float* const* rows, int x, float* medians)
+{
+    constexpr int r = K / 2;
+    Vec<Lanes> v[K * K + 1];
+    for (int dy = 0; dy < K; ++dy)
+        for (int dx = 0; dx < K; ++dx)
+            std::memcpy(&v[dy * K + dx], rows[dy] + x + dx - r, sizeof(Vec<Lanes>));
+    run_ops<K, Lanes>(v, std::make_index_sequence<size_t(WindowNet<K>::net.count)>());
+    std::memcpy(medians, &v[WindowNet<K>::net.result], sizeof(Vec<Lanes>));
 }
 
 template<int K>
-void window_median8_k(const float* const* rows, float* medians)
+void medians8(const float* const* rows, int x, float* medians)
 {
-    constexpr int r = K / 2;
-    vfloat8 v[K * K + 1];
-    for (int dy = 0; dy < K; ++dy)
-        for (int dx = 0; dx < K; ++dx)
-            v[dy * K + dx].load(rows[dy] + dx - r);
-    run_ops<K>(v, std::make_index_sequence<size_t(WindowNet<K>::net.count)>());
-    v[WindowNet<K>::net.result].store(medians);
+    window_medians<K, 8>(rows, x, medians);
+}
+
+template<int K>
+__attribute__((target("avx512f"))) void medians16(const float* const* rows, int x,
+                                                  float* medians)
+{
+    window_medians<K, 16>(rows, x, medians);
+}
+
+bool has_avx512()
+{
+    static const bool yes = __builtin_cpu_supports("avx512f");
+    return yes;
 }
 
 }  // namespace
 
-WindowMedian8 window_median8(int size)
+MedianKernel narrow_median_kernel(int size)
 {
     switch (size) {
-    case 3: return window_median8_k<3>;
-    case 5: return window_median8_k<5>;
-    case 7: return window_median8_k<7>;
-    case 9: return window_median8_k<9>;
-    default: return nullptr;
+    case 3: return { medians8<3>, 8 };
+    case 5: return { medians8<5>, 8 };
+    case 7: return { medians8<7>, 8 };
+    case 9: return { medians8<9>, 8 };
+    default: return {};
+    }
+}
+
+MedianKernel wide_median_kernel(int size)
+{
+    if (!has_avx512())
+        return narrow_median_kernel(size);
+    switch (size) {
+    case 3: return { medians16<3>, 16 };
+    case 5: return { medians16<5>, 16 };
+    case 7: return { medians16<7>, 16 };
+    case 9: return { medians16<9>, 16 };
+    default: return {};
     }
 }
 

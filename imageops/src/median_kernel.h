@@ -1,7 +1,8 @@
 // median_kernel.h: the one median kernel every median filter shares: pruned
-// selection networks, unrolled at compile time, that take the median of
-// eight full windows at once (one per SIMD lane), and in-place selection for
-// everything else (clipped windows, non-finite values, partial viability).
+// selection networks, unrolled at compile time, that take the median of a
+// run of full windows at once (one window per SIMD lane: 16 with AVX-512,
+// chosen at run time, else 8), and in-place selection for everything else
+// (clipped windows, non-finite values, partial viability).
 #pragma once
 
 namespace mcdenoise {
@@ -10,17 +11,22 @@ namespace mcdenoise {
 /// mean of the two middle values for even n. Reorders `values`.
 float median_in_place(float* values, int n);
 
-/// Number of windows a `WindowMedian8` handles at once.
-constexpr int median_lanes = 8;
+/// Medians of the `size` x `size` windows centered at `lanes` consecutive
+/// pixels starting at column `x` of `rows` (window row i is `rows[i]`, read
+/// at x - r .. x + lanes - 1 + r). Writes `lanes` values.
+using WindowMedians = void (*)(const float* const* rows, int x, float* medians);
 
-/// Medians of the `size` x `size` windows centered at the 8 consecutive
-/// pixels starting at column 0 of `rows`: `rows[i]` points at the center
-/// column of window row i (so it reads rows[i][-r .. 7 + r]). Writes 8 values.
-using WindowMedian8 = void (*)(const float* const* rows, float* medians);
+/// A network kernel and how many windows it takes at once.
+struct MedianKernel {
+    WindowMedians run = nullptr;
+    int lanes         = 0;
+};
 
-/// The network kernel for windows of side `size`, or nullptr when no
+/// The widest network kernel this processor runs for windows of side
+/// `size`, and the 8-lane one (for shorter runs); `run` is null when no
 /// network serves that size (sizes above 9 use in-place selection).
-WindowMedian8 window_median8(int size);
+MedianKernel wide_median_kernel(int size);
+MedianKernel narrow_median_kernel(int size);
 
 /// The number of min/max comparators in the network for `size`, or 0.
 int median_network_size(int size);

@@ -22,12 +22,12 @@ struct MedianSource {
     OIIO::ROI region;
     OIIO::ROI roi;
     int radius = 0;
-    std::vector<std::vector<float>> planes;
+    std::vector<std::unique_ptr<float[]>> planes;
     std::unique_ptr<ResultPixels> nonfinite_share;
 
     const float* plane_row(int c, int y) const
     {
-        return planes[size_t(c)].data() + size_t(y - region.ybegin) * region.width()
+        return planes[size_t(c)].get() + size_t(y - region.ybegin) * region.width()
                - region.xbegin;
     }
     bool finite_window(int c, int x, int y) const
@@ -50,26 +50,31 @@ template<class Rule>
 void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& strip,
                   ResultPixels& result)
 {
-    constexpr int lanes = median_lanes;
     const int r = src.radius, k = 2 * r + 1;
-    const OIIO::ROI& reg = src.region;
-    const WindowMedian8 net = window_median8(k);
+    const OIIO::ROI& reg     = src.region;
+    const MedianKernel wide   = wide_median_kernel(k);
+    const MedianKernel narrow = narrow_median_kernel(k);
+    const bool net            = wide.run != nullptr;
     std::vector<const float*> rows(static_cast<size_t>(k), nullptr);
     std::vector<float> gathered(size_t(k) * k);
     std::vector<char> fast(size_t(strip.width()));
     int64_t empty = 0;
 
-    auto unclipped = [&](int x, int y) {
-        return x - r >= reg.xbegin && x + r < reg.xend && y - r >= reg.ybegin
-               && y + r < reg.yend;
+    // Medians of the windows at x .. x + kernel.lanes - 1 by the network.
+    auto network_batch = [&](const MedianKernel& kernel, int c, int x, float* out_row) {
+        float medians[16];
+        kernel.run(rows.data(), x, medians);
+        float* out = out_row + (x - strip.xbegin) * result.pixel_stride() + c;
+        for (int l = 0; l < kernel.lanes; ++l)
+            out[l * result.pixel_stride()] = medians[l];
     };
-    auto network_batch = [&](int c, int x, int y) {
-        for (int dy = -r; dy <= r; ++dy)
-            rows[size_t(dy + r)] = src.plane_row(c, y + dy) + x;
-        float medians[lanes];
-        net(rows.data(), medians);
-        for (int l = 0; l < lanes; ++l)
-            result.pixel(x + l, y)[c] = medians[l];
+    // Medians of the windows [x, end), all taken by the network, at least
+    // 8 of them: wide batches, then narrow ones, the last overlapping.
+    auto network_run = [&](int c, int x, int end, float* out_row) {
+        for (; end - x >= wide.lanes; x += wide.lanes)
+            network_batch(wide, c, x, out_row);
+        for (; x < end; x += narrow.lanes)
+            network_batch(narrow, c, std::min(x, end - narrow.lanes), out_row);
     };
     auto gather_one = [&](int c, int x, int y) {
         const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
@@ -86,9 +91,15 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
     };
 
     for (int y = strip.ybegin; y < strip.yend; ++y) {
+        // Windows of this row that are whole (not clipped) and fully viable.
+        const bool whole_rows = net && y - r >= reg.ybegin && y + r < reg.yend;
         for (int x = strip.xbegin; x < strip.xend; ++x)
-            fast[size_t(x - strip.xbegin)] = net && unclipped(x, y) && rule.uniform(x, y);
+            fast[size_t(x - strip.xbegin)] = whole_rows && x - r >= reg.xbegin
+                                             && x + r < reg.xend && rule.uniform(x, y);
+        float* out_row = result.pixel(strip.xbegin, y);
         for (int c = 0; c < strip.nchannels(); ++c) {
+            for (int dy = -r; dy <= r && whole_rows; ++dy)
+                rows[size_t(dy + r)] = src.plane_row(c, y + dy);
             auto by_network = [&](int x) {
                 return fast[size_t(x - strip.xbegin)] && src.finite_window(c, x, y);
             };
@@ -97,9 +108,8 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
                 int run = x;  // [x, run): windows the network can take
                 while (run < strip.xend && by_network(run))
                     ++run;
-                if (run - x >= lanes) {
-                    for (int b = x; b < run; b += lanes)
-                        network_batch(c, std::min(b, run - lanes), y);
+                if (run > x && run - x >= narrow.lanes) {
+                    network_run(c, x, run, out_row);
                 } else {
                     for (int g = x; g < run; ++g)
                         gather_one(c, g, y);

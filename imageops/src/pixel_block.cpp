@@ -121,17 +121,17 @@ PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads)
     return out;
 }
 
-std::vector<std::vector<float>> channel_planes(const PixelBlock& src, int nthreads)
+std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int nthreads)
 {
     const int w = src.width(), nc = src.nchannels;
-    std::vector<std::vector<float>> planes(static_cast<size_t>(nc));
-    for (auto& plane : planes)
-        plane.resize(size_t(w) * src.height());
+    std::vector<std::unique_ptr<float[]>> planes;
+    for (int c = 0; c < nc; ++c)
+        planes.emplace_back(new float[size_t(w) * src.height()]);
     for_each_row(src, nthreads, [&](int y) {
         const float* in     = src.row(y);
         const size_t offset = size_t(y - src.region.ybegin) * w;
         for (int c = 0; c < nc; ++c) {
-            float* dst = planes[size_t(c)].data() + offset;
+            float* dst = planes[size_t(c)].get() + offset;
             for (int x = 0; x < w; ++x)
                 dst[x] = in[std::ptrdiff_t(x) * nc + c];
         }

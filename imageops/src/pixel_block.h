@@ -6,6 +6,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace mcdenoise {
@@ -55,6 +56,6 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads);
 PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads);
 
 /// Each channel of `src` as a contiguous plane (row stride = width).
-std::vector<std::vector<float>> channel_planes(const PixelBlock& src, int nthreads);
+std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int nthreads);
 
 }  // namespace mcdenoise
