@@ -136,9 +136,11 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
             continue;
         }
         std::string path = path_of(step.output);
-        batch.write(path, output_spec(input, options), merge_result(input, found.beauty, current), "-o");
+        OutputImage output = compose_output(input, found.beauty, current, options, path);
+        batch.write(path, output.spec, output.pixels, "-o");
         if (options.verbose)
-            std::printf("mcdtool: -o %s\n", path.c_str());
+            std::printf("mcdtool: -o %s%s\n", path.c_str(),
+                        output.beauty_only ? " (beauty channels only: the format holds at most 4)" : "");
     }
     ImageBuf reference;
     if (!options.compare.empty()) {
@@ -146,9 +148,12 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         reference = reference_beauty(reference_path, options, files);
         print_comparison(reference_path, before, current, reference, options);
     }
-    if (!options.preview.empty())
+    if (!options.preview.empty()) {
         write_preview(path_of(options.preview), before, current,
                       options.compare.empty() ? nullptr : &reference, options, batch);
+        if (options.verbose)
+            std::printf("mcdtool: --preview %s\n", path_of(options.preview).c_str());
+    }
     batch.commit();
     return FrameOutcome::written;
 }

@@ -89,6 +89,12 @@ void OutputBatch::commit()
     }
 }
 
+namespace {
+
+/// Channels any image format can hold.
+constexpr int portable_channels = 4;
+
+/// The input image with channels `beauty` replaced by `result`, as float.
 ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result)
 {
     ImageBuf merged;
@@ -110,6 +116,7 @@ ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, con
     return merged;
 }
 
+/// The spec to write for `input`, with -d and --compression applied.
 ImageSpec output_spec(const ImageBuf& input, const Options& options)
 {
     ImageSpec spec = input.nativespec();
@@ -120,6 +127,38 @@ ImageSpec output_spec(const ImageBuf& input, const Options& options)
     if (!options.compression.empty())
         spec.attribute("compression", options.compression);
     return spec;
+}
+
+/// True if the format chosen by `path`'s extension holds any channel count.
+bool holds_any_channels(const std::string& path)
+{
+    auto out = OIIO::ImageOutput::create(path);
+    OIIO::geterror();  // an unknown extension is reported when writing
+    return !out || out->supports("nchannels");
+}
+
+}  // namespace
+
+OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
+                           const Options& options, const std::string& path)
+{
+    OutputImage output;
+    output.spec = output_spec(input, options);
+    if (input.nchannels() <= portable_channels || holds_any_channels(path)) {
+        output.pixels = merge_result(input, beauty, result);
+        return output;
+    }
+    output.beauty_only = true;
+    output.pixels = result;
+    std::vector<std::string> names;
+    for (int c : beauty)
+        names.push_back(input.spec().channel_name(c));
+    output.spec.nchannels = int(beauty.size());
+    output.spec.channelnames = names;
+    output.spec.channelformats.clear();
+    output.spec.alpha_channel = -1;
+    output.spec.z_channel = -1;
+    return output;
 }
 
 bool same_file(const std::string& a, const std::string& b)

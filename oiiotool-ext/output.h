@@ -42,14 +42,20 @@ private:
     std::vector<std::pair<std::string, std::string>> pending_;  ///< (temp, final)
 };
 
-/// The input image with channels `beauty` replaced by the channels of
-/// `result` (same data window), as float.
-ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result);
+/// What one -o writes: the file spec and its float pixels.
+struct OutputImage {
+    ImageSpec spec;
+    ImageBuf pixels;
+    bool beauty_only = false;  ///< the format could not hold every channel
+};
 
-/// The spec to write: the input file's (channels, per-channel pixel types,
-/// metadata, compression, data and display windows) with -d and
-/// --compression applied.
-ImageSpec output_spec(const ImageBuf& input, const Options& options);
+/// The output for `path`: the input with channels `beauty` replaced by the
+/// channels of `result` (same data window), in the spec of the input file
+/// (channels, per-channel pixel types, metadata, compression, data and
+/// display windows) with -d and --compression applied. A format that holds
+/// at most four channels (PNG, JPEG) gets the beauty channels only.
+OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
+                           const Options& options, const std::string& path);
 
 /// True if `a` and `b` name the same file (or would, once `b` exists).
 bool same_file(const std::string& a, const std::string& b);

@@ -57,6 +57,15 @@ ImageBuf side_by_side(const std::vector<const ImageBuf*>& images)
     return canvas;
 }
 
+/// Throws unless `name` is one of `known` (the config's displays or views).
+void require_known(const char* option, const std::string& name, const std::vector<std::string>& known)
+{
+    if (std::find(known.begin(), known.end(), name) != known.end())
+        return;
+    throw RunError(format("{} : '{}' is not in the OCIO config (known: {})", option, name,
+                          known.empty() ? "none" : OIIO::Strutil::join(known, ", ")));
+}
+
 /// `canvas` converted from scene-linear to display values.
 ImageBuf to_display(const ImageBuf& canvas, const Options& options)
 {
@@ -72,7 +81,9 @@ ImageBuf to_display(const ImageBuf& canvas, const Options& options)
     bool ok = false;
     if (have_config) {
         std::string name = options.display.empty() ? config.getDefaultDisplayName() : options.display;
+        require_known("--display", name, config.getDisplayNames());
         std::string view = options.view.empty() ? config.getDefaultViewName(name) : options.view;
+        require_known("--view", view, config.getViewNames(name));
         const char* linear = config.getColorSpaceNameByRole("scene_linear");
         ok = IBA::ociodisplay(display, canvas, name, view, linear ? linear : "linear", "", false, "", "",
                               &config);

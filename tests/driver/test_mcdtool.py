@@ -128,6 +128,33 @@ def test_sequence_frame_error_keeps_other_frames(tmp_path):
     assert not (tmp_path / "clean.0002.exr").exists()
 
 
+def test_progress_line_on_terminal(tmp_path):
+    """On a terminal, stderr shows frame count, rate and ETA."""
+    import pty
+    import subprocess
+    from conftest import MCDTOOL
+    for frame in (1, 2, 3):
+        beauty, *_ = noisy_scene(seed=frame)
+        write_image(tmp_path / f"b.{frame:04d}.exr", beauty, BEAUTY)
+    master, slave = pty.openpty()
+    proc = subprocess.run([MCDTOOL, "b.####.exr", "--frames", "1-3", "--median", "3", "-o", "c.####.exr"],
+                          cwd=tmp_path, stdout=subprocess.PIPE, stderr=slave, timeout=120)
+    os.close(slave)
+    shown = b""
+    try:
+        while True:
+            chunk = os.read(master, 65536)
+            if not chunk:
+                break
+            shown += chunk
+    except OSError:
+        pass
+    os.close(master)
+    assert proc.returncode == 0
+    text = shown.decode()
+    assert "3/3" in text and "frames/s" in text and "ETA" in text, text
+
+
 def test_skip_existing(tmp_path):
     for frame in (1, 2):
         beauty, *_ = noisy_scene(seed=frame)
@@ -204,6 +231,10 @@ def test_preview_ocio(tmp_path):
             env={"OCIO": str(tmp_path / "test.ocio")})
     assert r.code == 0, r
     assert abs(read_image(tmp_path / "raw.png")[0][4, 4, 0] - 0.25) < 0.01
+    r = run(tmp_path / "flat.exr", "--median", 3, "--preview", tmp_path / "bad.png", "--view", "Filmic",
+            "--ocio-config", tmp_path / "test.ocio")
+    assert r.code == 1 and "--view : 'Filmic'" in r.err and "Gamma, Raw" in r.err, r
+    assert not (tmp_path / "bad.png").exists()
 
 
 def test_cycles_multilayer_discovery(cycles_exr, tmp_path):
@@ -246,6 +277,14 @@ def test_runstats_and_threads(testrender_exr, tmp_path):
     assert r.code == 0, r
     for key in ("read time", "write time", "--median", "--gaussian", "peak memory"):
         assert key in r.out, r
+
+
+def test_png_output_gets_the_beauty(testrender_exr, tmp_path):
+    """A format that holds at most four channels gets the beauty only."""
+    r = run(testrender_exr, "--median", 3, "-o", tmp_path / "clean.png")
+    assert r.code == 0, r
+    spec = read_image(tmp_path / "clean.png")[1]
+    assert list(spec.channelnames) == BEAUTY
 
 
 def test_force_overwrites_input(testrender_exr, tmp_path):
