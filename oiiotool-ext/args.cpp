@@ -264,6 +264,20 @@ Options parse_command_line(const std::vector<std::string>& args)
     if (!pattern && !options.frames.empty())
         throw UsageError(format("--frames given but the input '{}' has no frame pattern (#, @ or %04d)",
                                 options.input));
+    std::vector<std::pair<std::string, std::string>> outputs;  // (option, path)
+    for (const Step& step : options.steps)
+        if (!step.command)
+            outputs.emplace_back("-o", step.output);
+    if (!options.preview.empty())
+        outputs.emplace_back("--preview", options.preview);
+    for (const auto& [option, path] : outputs) {
+        if (pattern && !has_frame_pattern(path))
+            throw UsageError(format("{} '{}' has no frame pattern: every frame would write it (use e.g. "
+                                    "'{}')", option, path, "clean.####.exr"));
+        if (!pattern && has_frame_pattern(path))
+            throw UsageError(format("{} '{}' has a frame pattern but the input '{}' has none", option, path,
+                                    options.input));
+    }
     return options;
 }
 

@@ -111,8 +111,8 @@ std::string help_text()
     }
     text += "\nGuide roles (found in the input, or --aov ROLE=FILE[:CHANNELS]):\n";
     for (const RoleInfo& info : role_table())
-        text += help_row(info.name, format("{} channel(s): {}. Found as: {}.", channel_count_text(info),
-                                           info.what, pass_names_text(info)));
+        text += help_row(info.name, format("{}. Channels: {}. Found as: {}.", info.what, channel_count_text(info),
+                                           pass_names_text(info)));
     for (const std::string& group : option_groups) {
         text += "\n" + group + ":\n";
         for (const OptionSpec& option : option_table())

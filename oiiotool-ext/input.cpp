@@ -24,6 +24,9 @@ ImageBuf read_image(const std::string& path, std::string_view context)
         throw RunError(format("{} : cannot read '{}': {}", context, path,
                               reason.empty() ? (global.empty() ? "unknown error" : global) : reason));
     }
+    if (image.nsubimages() > 1)
+        throw RunError(format("{} : '{}' has {} parts (subimages); only single-part files are supported, "
+                              "split it with oiiotool first", context, path, image.nsubimages()));
     if (image.deep())
         throw RunError(format("{} : cannot read '{}': deep images are not supported", context, path));
     return image;

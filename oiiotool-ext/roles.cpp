@@ -52,7 +52,7 @@ const RoleInfo* find_role(std::string_view name)
 std::string channel_count_text(const RoleInfo& info)
 {
     if (info.like_beauty)
-        return "like beauty";
+        return "as many as the beauty";
     if (info.min_channels == info.max_channels)
         return std::to_string(info.min_channels);
     return OIIO::Strutil::fmt::format("{} or {}", info.max_channels, info.min_channels);

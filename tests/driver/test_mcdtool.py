@@ -416,3 +416,32 @@ def test_bad_later_failure_leaves_no_earlier_output(testrender_exr, tmp_path):
             "-o", tmp_path / "second.exr")
     check_failure(r, 1, "--median : ")
     assert_no_outputs(tmp_path, existing)
+
+
+def test_bad_sequence_usage(tmp_path):
+    r = run("beauty.####.exr", "--median", 3, "-o", "clean.####.exr", cwd=tmp_path)
+    check_failure(r, 2, "frame pattern", "--frames")
+    r = run("beauty.####.exr", "--frames", "1-3", "--median", 3, "-o", "clean.exr", cwd=tmp_path)
+    check_failure(r, 2, "-o 'clean.exr'", "no frame pattern")
+    r = run("beauty.exr", "--frames", "1-3", "--median", 3, "-o", "clean.####.exr", cwd=tmp_path)
+    check_failure(r, 2, "--frames", "no frame pattern")
+    r = run("beauty.####.exr", "--frames", "3-1x0", "-o", "clean.####.exr", cwd=tmp_path)
+    check_failure(r, 2, "--frames", "step")
+    assert os.listdir(tmp_path) == []
+
+
+def test_bad_multipart_input(testrender_exr, tmp_path):
+    parts = tmp_path / "parts.exr"
+    first = oiio.ImageBuf(str(testrender_exr))
+    out = oiio.ImageOutput.create(str(parts))
+    spec = first.spec()
+    assert out.open(str(parts), (spec, spec))
+    for i in range(2):
+        if i:
+            assert out.open(str(parts), spec, "AppendSubimage")
+        assert out.write_image(first.get_pixels(oiio.FLOAT))
+    out.close()
+    existing = os.listdir(tmp_path)
+    r = run(parts, "--median", 3, "-o", tmp_path / "out.exr")
+    check_failure(r, 1, "parts.exr", "2 parts")
+    assert_no_outputs(tmp_path, existing)
