@@ -256,6 +256,23 @@ def test_cycles_multilayer_discovery(cycles_exr, tmp_path):
             np.testing.assert_array_equal(channel(out, out_spec, name), channel(src, src_spec, name))
 
 
+def test_testrender_file_discovery(tmp_path):
+    """Every role is found in a real testrender file."""
+    testrender = os.environ.get("TESTRENDER")
+    if not testrender:
+        pytest.skip("testrender is not built")
+    import subprocess
+    subprocess.run([testrender, "--scene", "cornell", "--res", "32x24", "--spp", "2", "-q", "-o",
+                    str(tmp_path / "tr.exr")], check=True, timeout=120)
+    r = run(tmp_path / "tr.exr", "-v", "--median", 3, "-o", tmp_path / "clean.exr")
+    assert r.code == 0, r
+    for role, channels in [("beauty", "R,G,B"), ("id", "id"), ("reflid", "reflid"), ("normal", "N.X,N.Y,N.Z"),
+                           ("depth", "Z"), ("albedo", "albedo.R,albedo.G,albedo.B"),
+                           ("variance", "var.R,var.G,var.B"), ("half_a", "A.R,A.G,A.B"),
+                           ("half_b", "B.R,B.G,B.B")]:
+        assert f"{role:<8} <- {tmp_path / 'tr.exr'}: {channels}\n" in r.out, r
+
+
 def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
     r = run(cycles_exr, "--beauty", "My Layer.Combined", "--aov", f"normal={cycles_exr}:My Layer.Denoising Normal",
             "-v", "--median", 3, "-o", tmp_path / "out.exr")
