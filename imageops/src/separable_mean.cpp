@@ -6,6 +6,7 @@
 #include "window.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace mcdenoise {
 
@@ -55,7 +56,15 @@ void make_separable_source(PixelBlock block, const ROI& bounds, Kernel1D kernel,
     source.origin_y  = bounds.ybegin;
     source.nchannels = block.nchannels;
     source.masked    = has_nonfinite(block, nthreads);
-    source.block     = source.masked ? with_finite_mask(block, nthreads) : std::move(block);
+    source.pixels    = std::make_shared<const PixelBlock>(
+        source.masked ? with_finite_mask(block, nthreads) : std::move(block));
+}
+
+SeparableSource with_kernel(const SeparableSource& source, Kernel1D kernel)
+{
+    SeparableSource out = source;
+    out.kernel          = std::move(kernel);
+    return out;
 }
 
 bool load_separable_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
@@ -90,23 +99,32 @@ public:
     }
 
     /// `sums`: `width` pixels of (2 when masked) * nchannels values;
-    /// `geometric`: `width` weights, unused when masked.
-    int64_t write(const Sum* sums, const Sum* geometric, float* out, std::ptrdiff_t stride)
+    /// `geometric`: `width` weights, unused when masked. When `empty_per_pixel`
+    /// is given, it receives each pixel's count of empty channels.
+    int64_t write(const Sum* sums, const Sum* geometric, float* out, std::ptrdiff_t stride,
+                  uint8_t* empty_per_pixel)
     {
         const int nc      = m_nc;
         const size_t n    = m_quotients.size();
         const int width   = int(n / size_t(nc));
         int64_t empty     = 0;
         if (m_masked) {
-            for (int x = 0; x < width; ++x, sums += 2 * nc, out += stride)
+            for (int x = 0; x < width; ++x, sums += 2 * nc, out += stride) {
+                int pixel_empty = 0;
                 for (int c = 0; c < nc; ++c) {
                     const Sum weight = sums[nc + c];
                     const bool any   = weight > Sum(0);
                     out[c]           = any ? float(sums[c] * (Sum(1) / weight)) : 0.0f;
-                    empty += !any;
+                    pixel_empty += !any;
                 }
+                if (empty_per_pixel)
+                    empty_per_pixel[x] = uint8_t(std::min(pixel_empty, 255));
+                empty += pixel_empty;
+            }
             return empty;
         }
+        if (empty_per_pixel)
+            std::fill(empty_per_pixel, empty_per_pixel + width, uint8_t(0));
         expand(geometric);
         float* q = m_quotients.data();
         for (size_t i = 0; i < n; ++i)  // every geometric weight is > 0
@@ -149,17 +167,17 @@ class BoxRows {
 public:
     BoxRows(const SeparableSource& src, const ROI& strip)
         : m_src(src), m_strip(strip), m_r(src.kernel.radius),
-          m_interval(restart_interval(m_r)), m_channels(src.block.nchannels),
+          m_interval(restart_interval(m_r)), m_channels(src.block().nchannels),
           m_xb(restart_at_or_before(strip.xbegin, src.origin_x, m_interval)),
-          m_x0(std::max(src.block.region.xbegin, m_xb - m_r)),
-          m_x1(std::min(src.block.region.xend, strip.xend + m_r)),
+          m_x0(std::max(src.block().region.xbegin, m_xb - m_r)),
+          m_x1(std::min(src.block().region.xend, strip.xend + m_r)),
           m_col(size_t(m_x1 - m_x0) * m_channels), m_sum(size_t(m_channels)),
           m_row(size_t(strip.width()) * m_channels), m_weights(size_t(strip.width())),
           m_means(src.nchannels, src.masked, strip.width())
     {
     }
 
-    int64_t row(int y, float* out, std::ptrdiff_t stride)
+    int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
     {
         const int start = m_col_y == no_row
                               ? restart_at_or_before(y, m_src.origin_y, m_interval)
@@ -167,12 +185,12 @@ public:
         for (int yy = start; yy <= y; ++yy)
             advance_columns(yy);
         horizontal();
-        const ROI& reg    = m_src.block.region;
+        const ROI& reg    = m_src.block().region;
         const double rows = double(clip_window(y, m_r, reg.ybegin, reg.yend).size());
         for (int x = m_strip.xbegin; x < m_strip.xend; ++x)
             m_weights[size_t(x - m_strip.xbegin)]
                 = rows * double(clip_window(x, m_r, reg.xbegin, reg.xend).size());
-        return m_means.write(m_row.data(), m_weights.data(), out, stride);
+        return m_means.write(m_row.data(), m_weights.data(), out, stride, empty_per_pixel);
     }
 
 private:
@@ -182,7 +200,7 @@ private:
 
     void add_row(int y, double sign)
     {
-        const float* p = m_src.block.pixel(m_x0, y);
+        const float* p = m_src.block().pixel(m_x0, y);
         const size_t n = m_col.size();
         double* c      = m_col.data();
         if (sign > 0)
@@ -195,7 +213,7 @@ private:
 
     void advance_columns(int y)
     {
-        const ROI& reg = m_src.block.region;
+        const ROI& reg = m_src.block().region;
         if ((y - m_src.origin_y) % m_interval == 0) {
             std::fill(m_col.begin(), m_col.end(), 0.0);
             const Span span = clip_window(y, m_r, reg.ybegin, reg.yend);
@@ -228,7 +246,7 @@ private:
     template<int FixedC>
     void horizontal_for()
     {
-        const ROI& reg = m_src.block.region;
+        const ROI& reg = m_src.block().region;
         const int C    = FixedC ? FixedC : m_channels;
         const int r    = m_r;
         double* s      = m_sum.data();
@@ -282,18 +300,18 @@ class BinomialRows {
 public:
     BinomialRows(const SeparableSource& src, const ROI& strip)
         : m_src(src), m_strip(strip), m_r(src.kernel.radius),
-          m_channels(src.block.nchannels),
-          m_x0(std::max(src.block.region.xbegin, strip.xbegin - m_r)),
-          m_x1(std::min(src.block.region.xend, strip.xend + m_r)),
+          m_channels(src.block().nchannels),
+          m_x0(std::max(src.block().region.xbegin, strip.xbegin - m_r)),
+          m_x1(std::min(src.block().region.xend, strip.xend + m_r)),
           m_col(size_t(m_x1 - m_x0) * m_channels),
           m_row(size_t(strip.width()) * m_channels), m_weights(size_t(strip.width())),
           m_means(src.nchannels, src.masked, strip.width())
     {
     }
 
-    int64_t row(int y, float* out, std::ptrdiff_t stride)
+    int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
     {
-        const ROI& reg = m_src.block.region;
+        const ROI& reg = m_src.block().region;
         const Span ys  = clip_window(y, m_r, reg.ybegin, reg.yend);
         vertical(y, ys);
         horizontal();
@@ -303,7 +321,7 @@ public:
             column_weight += w[j - y + m_r] * 1.0f;
         if (!m_src.masked)
             geometric_weights(column_weight);
-        return m_means.write(m_row.data(), m_weights.data(), out, stride);
+        return m_means.write(m_row.data(), m_weights.data(), out, stride, empty_per_pixel);
     }
 
 private:
@@ -311,7 +329,7 @@ private:
     // sums are taken; the same for every pixel whose window is not clipped.
     void geometric_weights(float column_weight)
     {
-        const ROI& reg = m_src.block.region;
+        const ROI& reg = m_src.block().region;
         const float* w = m_src.kernel.weights.data();
         float interior = 0.0f;
         for (int i = 0; i <= 2 * m_r; ++i)
@@ -336,7 +354,7 @@ private:
         std::fill(c, c + n, 0.0f);
         for (int j = ys.begin; j < ys.end; ++j) {
             const float wj = w[j - y + m_r];
-            const float* p = m_src.block.pixel(m_x0, j);
+            const float* p = m_src.block().pixel(m_x0, j);
             for (size_t i = 0; i < n; ++i)
                 c[i] += wj * p[i];
         }
@@ -344,7 +362,7 @@ private:
 
     void horizontal()
     {
-        const ROI& reg = m_src.block.region;
+        const ROI& reg = m_src.block().region;
         const float* w = m_src.kernel.weights.data();
         const int C = m_channels, r = m_r;
         const int in_begin = std::clamp(reg.xbegin + r, m_strip.xbegin, m_strip.xend);
@@ -386,27 +404,42 @@ private:
     RowMeans<float> m_means;
 };
 
-template<class Rows>
-void mean_rows(const SeparableSource& source, const ROI& strip, ResultPixels& result)
-{
-    Rows rows(source, strip);
-    int64_t empty = 0;
-    for (int y = strip.ybegin; y < strip.yend; ++y) {
-        float* out = result.pixel(strip.xbegin, y);
-        empty += rows.row(y, out, result.pixel_stride());
+}  // namespace
+
+struct SeparableMeanRows::Impl {
+    Impl(const SeparableSource& source, const ROI& strip)
+    {
+        if (source.kernel.box)
+            box.reset(new BoxRows(source, strip));
+        else
+            binomial.reset(new BinomialRows(source, strip));
     }
-    result.empty_windows += empty;
+    std::unique_ptr<BoxRows> box;
+    std::unique_ptr<BinomialRows> binomial;
+};
+
+SeparableMeanRows::SeparableMeanRows(const SeparableSource& source, const ROI& strip)
+    : m_impl(new Impl(source, strip))
+{
 }
 
-}  // namespace
+SeparableMeanRows::~SeparableMeanRows() = default;
+
+int64_t SeparableMeanRows::row(int y, float* out, std::ptrdiff_t stride,
+                               uint8_t* empty_per_pixel)
+{
+    return m_impl->box ? m_impl->box->row(y, out, stride, empty_per_pixel)
+                       : m_impl->binomial->row(y, out, stride, empty_per_pixel);
+}
 
 void separable_mean_strip(const SeparableSource& source, const ROI& strip,
                           ResultPixels& result)
 {
-    if (source.kernel.box)
-        mean_rows<BoxRows>(source, strip, result);
-    else
-        mean_rows<BinomialRows>(source, strip, result);
+    SeparableMeanRows rows(source, strip);
+    int64_t empty = 0;
+    for (int y = strip.ybegin; y < strip.yend; ++y)
+        empty += rows.row(y, result.pixel(strip.xbegin, y), result.pixel_stride(), nullptr);
+    result.empty_windows += empty;
 }
 
 }  // namespace mcdenoise

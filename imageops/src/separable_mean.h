@@ -10,6 +10,8 @@
 #include "operation.h"
 #include "pixel_block.h"
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace mcdenoise {
@@ -33,10 +35,12 @@ Kernel1D binomial_kernel(int size);
 /// is non-finite.
 struct SeparableSource {
     Kernel1D kernel;
-    PixelBlock block;
-    int nchannels = 0;  ///< beauty channels (block has twice that when masked)
+    std::shared_ptr<const PixelBlock> pixels;  ///< may be shared by several kernels
+    int nchannels = 0;  ///< beauty channels (the block has twice that when masked)
     bool masked   = false;
     int origin_x = 0, origin_y = 0;  ///< the data window's origin: restart anchor
+
+    const PixelBlock& block() const { return *pixels; }
 };
 
 /// Read `beauty` over what `kernel` reaches from `roi`.
@@ -45,14 +49,36 @@ bool load_separable_source(const char* op, OIIO::ImageBuf& dst,
                            const OIIO::ImageBuf& beauty, const OIIO::ROI& roi,
                            Kernel1D kernel, int nthreads, SeparableSource& source);
 
-/// Use `block` (already read, covering what `kernel` reaches from `roi`
+/// Use `block` (already read, covering what `kernel` reaches from the ROI
 /// within `bounds`, the data window) as a separable source.
 void make_separable_source(PixelBlock block, const OIIO::ROI& bounds, Kernel1D kernel,
                            int nthreads, SeparableSource& source);
 
+/// The same pixels as `source`, summed with another kernel (whose reach
+/// from the ROI the block must cover).
+SeparableSource with_kernel(const SeparableSource& source, Kernel1D kernel);
+
 /// The block region a separable source needs to produce `roi`.
 OIIO::ROI separable_source_region(const OIIO::ROI& roi, const Kernel1D& kernel,
                                   const OIIO::ROI& bounds);
+
+/// The kernel-weighted means of one strip, produced row by row, top to
+/// bottom; rows may be skipped. A pixel's value does not depend on the strip.
+class SeparableMeanRows {
+public:
+    SeparableMeanRows(const SeparableSource& source, const OIIO::ROI& strip);
+    ~SeparableMeanRows();
+
+    /// Write row `y`'s means (strip.width() pixels, `stride` floats apart,
+    /// the source's channels each) to `out`; returns the count of empty
+    /// windows. When `empty_per_pixel` is given, it receives each pixel's
+    /// count of channels whose window held no finite value.
+    int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
 
 /// The kernel-weighted mean of the finite values in each pixel's window, for
 /// every pixel and channel of `strip`, into `result`. Windows with no finite

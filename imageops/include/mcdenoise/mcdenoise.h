@@ -28,5 +28,9 @@
 ///   Results are bit-identical for any thread count and any ROI split.
 /// - **In place.** `dst` may be the same image as `beauty`.
 
+#include <mcdenoise/brdf.h>
+#include <mcdenoise/dof.h>
+#include <mcdenoise/normal.h>
+#include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>
 #include <mcdenoise/metrics.h>

@@ -1,0 +1,104 @@
+// brdf.cpp: the BRDF filters: object filters that, on specular pixels, also
+// require the same reflected object.
+#include <mcdenoise/brdf.h>
+
+#include "guide_rules.h"
+#include "window_filter.h"
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// BRDF rule: on a specular center (reflect id >= 0) q must share both the
+// object id and the reflect id; elsewhere the object id.
+struct SameObjectAndReflection {
+    const IdPlane& ids;
+    const IdPlane& reflect;
+    UniformMap same_id, same_both;
+
+    bool specular(int x, int y) const { return reflect.at(x, y) >= 0; }
+    bool uniform(int x, int y) const
+    {
+        return specular(x, y) ? same_both.at(x, y) : same_id.at(x, y);
+    }
+    bool viable(int px, int py, int qx, int qy) const
+    {
+        return ids.at(qx, qy) == ids.at(px, py)
+               && (!specular(px, py) || reflect.at(qx, qy) == reflect.at(px, py));
+    }
+    double weight(int, int, int, int) const { return 1.0; }
+};
+
+bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const ImageBuf& beauty,
+                 const ImageBuf& object_id, const ImageBuf& reflect_id, int size, ROI roi,
+                 int nthreads)
+{
+    IdPlane ids, reflect;
+    if (!check_window_op(op, dst, beauty, size, roi)
+        || !load_window_ids(op, dst, beauty, object_id, roi, size, nthreads, ids)
+        || !check_guide(op, "reflect_id", dst, reflect_id, 1, roi)
+        || !load_reflect_ids(op, dst, reflect_id, ids.region, nthreads, reflect))
+        return false;
+    const std::vector<int64_t>&id = ids.values, &rid = reflect.values;
+    const int r = size / 2;
+    const SameObjectAndReflection rule {
+        ids, reflect,
+        uniform_map(ids.region, roi, r, [&](size_t i, size_t j) { return id[i] == id[j]; }),
+        uniform_map(ids.region, roi, r,
+                    [&](size_t i, size_t j) { return id[i] == id[j] && rid[i] == rid[j]; })
+    };
+    return run_window_filter(op, reduction, dst, beauty,
+                             { &beauty, &object_id, &reflect_id }, size, rule, roi, nthreads);
+}
+
+}  // namespace
+
+bool brdf_mean(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
+               const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return brdf_filter("brdf_mean", Reduction::box_mean, dst, beauty, object_id, reflect_id,
+                       size, roi, nthreads);
+}
+
+ImageBuf brdf_mean(const ImageBuf& beauty, const ImageBuf& object_id,
+                   const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return brdf_mean(dst, beauty, object_id, reflect_id, size, roi, nthreads);
+    });
+}
+
+bool brdf_gaussian(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
+                   const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return brdf_filter("brdf_gaussian", Reduction::binomial_mean, dst, beauty, object_id,
+                       reflect_id, size, roi, nthreads);
+}
+
+ImageBuf brdf_gaussian(const ImageBuf& beauty, const ImageBuf& object_id,
+                       const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return brdf_gaussian(dst, beauty, object_id, reflect_id, size, roi, nthreads);
+    });
+}
+
+bool brdf_median(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
+                 const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return brdf_filter("brdf_median", Reduction::median, dst, beauty, object_id, reflect_id,
+                       size, roi, nthreads);
+}
+
+ImageBuf brdf_median(const ImageBuf& beauty, const ImageBuf& object_id,
+                     const ImageBuf& reflect_id, int size, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return brdf_median(dst, beauty, object_id, reflect_id, size, roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise

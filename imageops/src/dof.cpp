@@ -1,0 +1,187 @@
+// dof.cpp: the depth-of-field filter: depth levels, their window sides (the
+// focus map), and an object mean of each pixel's own side.
+#include <mcdenoise/dof.h>
+
+#include "guide_rules.h"
+#include "window_filter.h"
+
+#include <cmath>
+#include <limits>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// The window side of every pixel of `roi`, from its depth level.
+struct FocusMap {
+    ROI roi;
+    std::vector<int> sides;
+    int largest = 1;
+
+    int at(int x, int y) const
+    {
+        return sides[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)];
+    }
+};
+
+bool check_levels(const char* op, ImageBuf& dst, int levels, int focus_level)
+{
+    if (levels < 1 || focus_level < 0 || focus_level >= levels) {
+        dst.errorfmt("{}: need levels >= 1 and 0 <= focus_level < levels, got levels {} "
+                     "and focus_level {}",
+                     op, levels, focus_level);
+        return false;
+    }
+    const int widest = 1 + 2 * std::max(focus_level, levels - 1 - focus_level);
+    if (widest > max_window_size) {
+        dst.errorfmt("{}: {} levels focused at {} need a window side of {}, above the "
+                     "limit of {}",
+                     op, levels, focus_level, widest, max_window_size);
+        return false;
+    }
+    return true;
+}
+
+// The smallest and largest finite depths of the whole depth image, so that
+// a pixel's level never depends on the ROI.
+std::pair<double, double> depth_range(const GuidePlane<float>& all)
+{
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (float d : all.values)
+        if (std::isfinite(d)) {
+            lo = std::min(lo, double(d));
+            hi = std::max(hi, double(d));
+        }
+    return { lo, hi };
+}
+
+bool focus_map(const char* op, ImageBuf& dst, const ImageBuf& depth, int levels,
+               int focus_level, float depth_near, float depth_far, const ROI& roi,
+               int nthreads, FocusMap& map)
+{
+    GuidePlane<float> all;
+    if (!check_levels(op, dst, levels, focus_level)
+        || !check_guide(op, "depth", dst, depth, 1, roi)
+        || !load_depths(op, dst, depth, depth.roi(), nthreads, all))
+        return false;
+    const bool explicit_range = depth_far > depth_near;
+    auto [lo, hi] = explicit_range ? std::make_pair(double(depth_near), double(depth_far))
+                                   : depth_range(all);
+    map.roi = roi;
+    map.sides.resize(size_t(roi.width()) * roi.height());
+    for (int y = roi.ybegin; y < roi.yend; ++y)
+        for (int x = roi.xbegin; x < roi.xend; ++x) {
+            const double d = all.at(x, y);
+            int level      = levels - 1;
+            if (std::isfinite(d) && hi > lo) {
+                const double t = (std::clamp(d, lo, hi) - lo) / (hi - lo);
+                level = std::min(levels - 1, int(std::floor(levels * t)));
+            } else if (std::isfinite(d)) {
+                level = 0;
+            }
+            const int side = 1 + 2 * std::abs(level - focus_level);
+            map.sides[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)] = side;
+            map.largest = std::max(map.largest, side);
+        }
+    return true;
+}
+
+}  // namespace
+
+bool dof_focus_map(ImageBuf& dst, const ImageBuf& depth, int levels, int focus_level,
+                   float depth_near, float depth_far, ROI roi, int nthreads)
+{
+    const char* op = "dof_focus_map";
+    FocusMap map;
+    ResultPixels result;
+    if (!resolve_roi(op, dst, depth, roi))
+        return false;
+    roi.chbegin = 0;
+    roi.chend   = 1;
+    if (!focus_map(op, dst, depth, levels, focus_level, depth_near, depth_far, roi, nthreads,
+                   map)
+        || !begin_result(op, dst, depth, { &depth }, roi, result))
+        return false;
+    for (int y = roi.ybegin; y < roi.yend; ++y)
+        for (int x = roi.xbegin; x < roi.xend; ++x)
+            *result.pixel(x, y) = float(map.at(x, y));
+    return finish_result(op, dst, result);
+}
+
+ImageBuf dof_focus_map(const ImageBuf& depth, int levels, int focus_level, float depth_near,
+                       float depth_far, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return dof_focus_map(dst, depth, levels, focus_level, depth_near, depth_far, roi,
+                             nthreads);
+    });
+}
+
+bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
+         const ImageBuf& depth, int levels, int focus_level, float depth_near,
+         float depth_far, ROI roi, int nthreads)
+{
+    const char* op = "dof";
+    FocusMap map;
+    IdPlane ids;
+    if (!resolve_roi(op, dst, beauty, roi)
+        || !focus_map(op, dst, depth, levels, focus_level, depth_near, depth_far, roi,
+                      nthreads, map)
+        || !load_window_ids(op, dst, beauty, object_id, roi, map.largest, nthreads, ids))
+        return false;
+
+    // One read of the beauty covers every side's reach; each side present
+    // then gets its own kernel and uniform-window map over the same pixels.
+    std::vector<int> sides;
+    for (int side = 1; side <= map.largest; side += 2)
+        if (std::find(map.sides.begin(), map.sides.end(), side) != map.sides.end())
+            sides.push_back(side);
+    ROI region = roi;
+    for (int side : sides) {
+        const ROI reach = separable_source_region(roi, box_kernel(side), beauty.roi());
+        region          = OIIO::roi_union(region, reach);
+    }
+    region.chbegin = roi.chbegin;
+    region.chend   = roi.chend;
+    PixelBlock block;
+    if (!load_block(beauty, region, block)) {
+        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+        return false;
+    }
+    SeparableSource pixels;
+    make_separable_source(std::move(block), beauty.roi(), box_kernel(1), nthreads, pixels);
+    std::vector<SeparableSource> sources;
+    std::vector<SameObject> rules;
+    for (int side : sides) {
+        sources.push_back(with_kernel(pixels, box_kernel(side)));
+        rules.push_back(same_object_rule(ids, roi, side));
+    }
+
+    ResultPixels result;
+    if (!begin_result(op, dst, beauty, { &beauty, &object_id, &depth }, roi, result))
+        return false;
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+        for (size_t i = 0; i < sides.size(); ++i) {
+            const int side = sides[i];
+            guided_mean_strip(sources[i], rules[i],
+                              [&](int x, int y) { return map.at(x, y) == side; }, strip,
+                              result);
+        }
+    });
+    return finish_result(op, dst, result);
+}
+
+ImageBuf dof(const ImageBuf& beauty, const ImageBuf& object_id, const ImageBuf& depth,
+             int levels, int focus_level, float depth_near, float depth_far, ROI roi,
+             int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return dof(dst, beauty, object_id, depth, levels, focus_level, depth_near, depth_far,
+                   roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise

@@ -1,0 +1,96 @@
+// guided_mean.h: the one window walker for weighted-mean filters. A filter
+// is a rule: which neighbours are viable and with what guide weight. Pixels
+// whose whole window is viable with weight 1 take the separable fast path;
+// the others are summed neighbour by neighbour.
+#pragma once
+
+#include "separable_mean.h"
+#include "window.h"
+
+#include <vector>
+
+namespace mcdenoise {
+
+/// The weighted mean of pixel (x, y)'s viable finite neighbours, each
+/// weighted by the spatial kernel times `rule.weight` (the center by its
+/// spatial weight alone), into `out`. `scratch` holds 2 * channels doubles.
+/// Returns the count of channels with no contribution (set to 0).
+template<class Rule>
+int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
+                      double* scratch, float* out)
+{
+    const Kernel1D& k = src.kernel;
+    const int r = k.radius, nc = src.nchannels;
+    const OIIO::ROI& reg = src.block().region;
+    const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
+    const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
+    double* num = scratch;
+    double* den = scratch + nc;
+    std::fill(scratch, scratch + 2 * nc, 0.0);
+    for (int qy = ys.begin; qy < ys.end; ++qy) {
+        const double wy = k.weights[size_t(qy - y + r)];
+        for (int qx = xs.begin; qx < xs.end; ++qx) {
+            const bool center = qx == x && qy == y;
+            if (!center && !rule.viable(x, y, qx, qy))
+                continue;
+            const double w = wy * k.weights[size_t(qx - x + r)]
+                             * (center ? 1.0 : rule.weight(x, y, qx, qy));
+            const float* v = src.block().pixel(qx, qy);
+            for (int c = 0; c < nc; ++c) {
+                const bool finite = !src.masked || v[nc + c] != 0.0f;
+                num[c] += finite ? w * v[c] : 0.0;
+                den[c] += finite ? w : 0.0;
+            }
+        }
+    }
+    int empty = 0;
+    for (int c = 0; c < nc; ++c) {
+        const bool any = den[c] > 0.0;
+        out[c]         = any ? float(num[c] / den[c]) : 0.0f;
+        empty += !any;
+    }
+    return empty;
+}
+
+/// The guided weighted mean over the pixels of `strip` that `selected(x, y)`
+/// picks: `rule.uniform(x, y)` pixels from the separable fast path, the
+/// others neighbour by neighbour. Rows with no selected pixel are skipped.
+template<class Rule, class Selected>
+void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& selected,
+                       const OIIO::ROI& strip, ResultPixels& result)
+{
+    const int nc = src.nchannels, w = strip.width();
+    SeparableMeanRows fast(src, strip);
+    std::vector<float> fast_row(size_t(w) * nc);
+    std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
+    std::vector<double> scratch(size_t(2 * nc));
+    int64_t empty = 0;
+    for (int y = strip.ybegin; y < strip.yend; ++y) {
+        bool any_selected = false, any_uniform = false;
+        for (int x = strip.xbegin; x < strip.xend; ++x) {
+            const bool s = selected(x, y);
+            any_selected |= s;
+            any_uniform |= s && rule.uniform(x, y);
+        }
+        if (!any_selected)
+            continue;
+        if (any_uniform)
+            fast.row(y, fast_row.data(), nc, fast_empty.data());
+        for (int x = strip.xbegin; x < strip.xend; ++x) {
+            if (!selected(x, y))
+                continue;
+            float* out = result.pixel(x, y);
+            if (rule.uniform(x, y)) {
+                const float* f = fast_row.data() + size_t(x - strip.xbegin) * nc;
+                for (int c = 0; c < nc; ++c)
+                    out[c] = f[c];
+                empty += fast_empty[size_t(x - strip.xbegin)];
+            } else {
+                empty += guided_mean_pixel(src, rule, x, y, scratch.data(), out);
+            }
+        }
+    }
+    result.empty_windows += empty;
+}
+
+}  // namespace mcdenoise

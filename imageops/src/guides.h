@@ -1,0 +1,68 @@
+// guides.h: the auxiliary buffers (object id, reflect id, normal, depth)
+// checked against the beauty's ROI and normalised once into contiguous
+// planes the hot loops read: ids as whole numbers, unit normals, depths with
+// "infinitely far" made explicit.
+#pragma once
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace mcdenoise {
+
+/// Check that `guide` (named `name` in messages, e.g. "object_id") is a
+/// readable image with `nchannels` channels whose data window covers `roi`.
+/// On failure sets `dst`'s error prefixed with `op` and returns false.
+bool check_guide(const char* op, const char* name, OIIO::ImageBuf& dst,
+                 const OIIO::ImageBuf& guide, int nchannels, const OIIO::ROI& roi);
+
+/// A plane of values over `region`, one per pixel, row-major.
+template<class T>
+struct GuidePlane {
+    OIIO::ROI region;
+    std::vector<T> values;
+
+    size_t index(int x, int y) const
+    {
+        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
+    }
+    const T& at(int x, int y) const { return values[index(x, y)]; }
+};
+
+/// Ids, rounded to the nearest whole number.
+using IdPlane = GuidePlane<int64_t>;
+
+/// The id given to pixels outside a guide's data window: equal to no id.
+constexpr int64_t no_guide_id = std::numeric_limits<int64_t>::min();
+
+/// Object ids over `region`: rounded to nearest, NaN as -1.
+bool load_object_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& ids,
+                     const OIIO::ROI& region, int nthreads, IdPlane& plane);
+
+/// Reflect ids over `region`: rounded to nearest; any negative value or NaN
+/// as -1 ("not specular").
+bool load_reflect_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& ids,
+                      const OIIO::ROI& region, int nthreads, IdPlane& plane);
+
+/// A normal, unit length, or all zero for "no normal".
+struct UnitNormal {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+    bool present() const { return x != 0.0f || y != 0.0f || z != 0.0f; }
+};
+
+/// Normals over `region`, normalised; zero-length or non-finite ones (and
+/// pixels outside the guide's data window) as "no normal".
+bool load_normals(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& normals,
+                  const OIIO::ROI& region, int nthreads, GuidePlane<UnitNormal>& plane);
+
+/// Depths at or beyond this are "infinitely far" (Cycles marks background
+/// with 1e10).
+constexpr float infinitely_far = 1e9f;
+
+/// Depths over `region`; non-finite and >= `infinitely_far` values as +inf.
+bool load_depths(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& depth,
+                 const OIIO::ROI& region, int nthreads, GuidePlane<float>& plane);
+
+}  // namespace mcdenoise

@@ -1,0 +1,61 @@
+// window_filter.h: runs a window filter from its rule: reads the beauty once
+// in the form the reduction needs, allocates the result only after every
+// input has been read, walks the ROI on all threads, and finishes `dst`.
+#pragma once
+
+#include "guided_mean.h"
+#include "median_walker.h"
+#include "operation.h"
+
+#include <OpenImageIO/imagebufalgo_util.h>
+
+#include <initializer_list>
+
+namespace mcdenoise {
+
+/// How a window's viable values become one value.
+enum class Reduction { box_mean, binomial_mean, median };
+
+/// Every neighbour is viable with weight 1: the simple filters' rule.
+struct AllViable {
+    bool uniform(int, int) const { return true; }
+    bool viable(int, int, int, int) const { return true; }
+    double weight(int, int, int, int) const { return 1.0; }
+};
+
+/// Filter `roi` of `beauty` (already checked, like every guide) into `dst`
+/// with window side `size`, reducing the viable neighbours that `rule`
+/// picks by `reduction`. `inputs` are every image read (for in-place use).
+template<class Rule>
+bool run_window_filter(const char* op, Reduction reduction, OIIO::ImageBuf& dst,
+                       const OIIO::ImageBuf& beauty,
+                       std::initializer_list<const OIIO::ImageBuf*> inputs, int size,
+                       const Rule& rule, const OIIO::ROI& roi, int nthreads)
+{
+    ResultPixels result;
+    if (reduction == Reduction::median) {
+        MedianSource source;
+        if (!load_median_source(op, dst, beauty, roi, size, nthreads, source)
+            || !begin_result(op, dst, beauty, inputs, roi, result))
+            return false;
+        OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](OIIO::ROI strip) {
+            median_strip(source, rule, strip, result);
+        });
+        return finish_result(op, dst, result);
+    }
+    SeparableSource source;
+    Kernel1D kernel = reduction == Reduction::box_mean ? box_kernel(size)
+                                                       : binomial_kernel(size);
+    if (!load_separable_source(op, dst, beauty, roi, std::move(kernel), nthreads, source)
+        || !begin_result(op, dst, beauty, inputs, roi, result))
+        return false;
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](OIIO::ROI strip) {
+        if constexpr (std::is_same_v<Rule, AllViable>)
+            separable_mean_strip(source, strip, result);
+        else
+            guided_mean_strip(source, rule, [](int, int) { return true; }, strip, result);
+    });
+    return finish_result(op, dst, result);
+}
+
+}  // namespace mcdenoise
