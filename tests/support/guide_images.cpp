@@ -1,0 +1,78 @@
+// guide_images.cpp: building structured guide images for tests.
+#include "guide_images.h"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace testimg {
+
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+
+namespace {
+
+ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format, int x0,
+                     int y0, const std::vector<float>& values)
+{
+    ImageSpec spec(width, height, nchannels, format);
+    spec.x = x0;
+    spec.y = y0;
+    ImageBuf img(spec);
+    img.set_pixels(img.roi(), OIIO::TypeDesc::FLOAT, values.data());
+    return img;
+}
+
+}  // namespace
+
+ImageBuf block_ids(int width, int height, uint32_t seed, OIIO::TypeDesc format, int x0,
+                   int y0)
+{
+    std::mt19937 rng(seed);
+    std::vector<float> v(size_t(width) * height);
+    const int bw = 3 + int(rng() % 9), bh = 3 + int(rng() % 9);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const int block = (x / bw) * 7 + (y / bh) * 3;
+            v[size_t(y) * width + x] = float((block * 2654435761u >> 7) % 5);
+            if (rng() % 23 == 0)  // a stray pixel of another object
+                v[size_t(y) * width + x] = float(rng() % 5);
+        }
+    return from_values(width, height, 1, format, x0, y0, v);
+}
+
+ImageBuf block_reflect_ids(int width, int height, uint32_t seed, int x0, int y0)
+{
+    std::mt19937 rng(seed);
+    std::vector<float> v(size_t(width) * height);
+    const int bw = 4 + int(rng() % 8), bh = 4 + int(rng() % 8);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const int block = (x / bw) * 5 + (y / bh);
+            const bool specular = (block * 40503u >> 3) % 2 == 0;
+            v[size_t(y) * width + x] = specular ? float((x / 3 + y / 4) % 3) : -1.0f;
+            if (rng() % 31 == 0)
+                v[size_t(y) * width + x] = -7.0f;  // any negative: not specular
+        }
+    return from_values(width, height, 1, OIIO::TypeDesc::FLOAT, x0, y0, v);
+}
+
+ImageBuf wavy_normals(int width, int height, uint32_t seed, int x0, int y0)
+{
+    std::mt19937 rng(seed);
+    std::vector<float> v(size_t(width) * height * 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float* n = &v[(size_t(y) * width + x) * 3];
+            const bool flat = (x / 6 + y / 5) % 3 == 0;
+            const float scale = 0.5f + float(rng() % 4);
+            n[0] = flat ? 0.0f : std::sin(0.4f * x) * scale;
+            n[1] = flat ? 2.0f : std::cos(0.3f * y) * scale;
+            n[2] = flat ? 0.0f : (std::sin(0.2f * (x + y)) - 0.3f) * scale;
+            if (rng() % 19 == 0)
+                n[0] = n[1] = n[2] = 0.0f;
+        }
+    return from_values(width, height, 3, OIIO::TypeDesc::FLOAT, x0, y0, v);
+}
+
+}  // namespace testimg

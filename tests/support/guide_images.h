@@ -1,0 +1,27 @@
+// guide_images.h: structured auxiliary buffers for the guided-filter tests:
+// object ids in blocks with stray pixels, reflect ids on "specular" blocks,
+// smooth normals with missing ones, and depth ramps.
+#pragma once
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <cstdint>
+
+namespace testimg {
+
+/// One-channel ids: rectangular blocks of a few labels, plus stray single
+/// pixels, stored as `format` (float, half, uint32...), origin (x0, y0).
+OIIO::ImageBuf block_ids(int width, int height, uint32_t seed,
+                         OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT, int x0 = 0,
+                         int y0 = 0);
+
+/// One-channel reflect ids: -1 (not specular) on about half the blocks,
+/// a few reflected labels elsewhere.
+OIIO::ImageBuf block_reflect_ids(int width, int height, uint32_t seed, int x0 = 0,
+                                 int y0 = 0);
+
+/// Three-channel normals varying smoothly, not unit length, with some
+/// zero-length ("no normal") pixels and flat patches of one normal.
+OIIO::ImageBuf wavy_normals(int width, int height, uint32_t seed, int x0 = 0, int y0 = 0);
+
+}  // namespace testimg
