@@ -13,6 +13,8 @@ namespace {
 
 /// Secondary rays start this far off the surface, on the side they leave.
 constexpr double surface_offset = 1e-5;
+/// Shadow rays stop this fraction short of the light point.
+constexpr double shadow_margin = 1e-7;
 /// Russian roulette keeps a path with at most this probability.
 constexpr double max_survival = 0.95;
 
@@ -44,8 +46,14 @@ Vec3 sample_direct(const Scene& scene, const Material& m, const Vec3& base, cons
     const Vec3 f = bsdf_eval(m, base, wo, wi_local);
     if (is_black(f))
         return Vec3(0.0);
-    const Ray shadow { offset_origin(hit, wi), wi };
-    if (scene.occluded(shadow, dist * (1 - 1e-6)))
+    // The shadow ray leaves from the offset origin, so its length to the
+    // light point is measured from there: the light itself must not count as
+    // an occluder.
+    const Vec3 origin = offset_origin(hit, wi);
+    const Vec3 to_light_from_origin = ls.position - origin;
+    const double shadow_length = length(to_light_from_origin);
+    const Ray shadow { origin, to_light_from_origin / shadow_length };
+    if (scene.occluded(shadow, shadow_length * (1 - shadow_margin)))
         return Vec3(0.0);
     const double pdf_light = ls.pdf_area * dist2 / cos_light;
     const double weight = power_heuristic(pdf_light, bsdf_pdf(m, base, wo, wi_local));

@@ -38,12 +38,15 @@ class RefSet : public ::testing::TestWithParam<const char*> {};
 
 // relMSE(n) = V / n + V / n_ref for a reference of n_ref samples (independent
 // seed; the renderer is unbiased), so the expected ratio for 4 -> 16 spp is
-// 4 (1 + 4/n_ref)/(1 + 16/n_ref) ~ 3.97 and for 16 -> 32 spp ~ 1.98 with
-// n_ref = 2048. Measured at 128x128 (docs/testrender.md) the ratios fall in
-// 3.4..4.4 and 1.8..2.2; the fireflies of caustic paths (heavy tails) are what
-// moves them. The bands below are about +-30% around the ideal.
-constexpr double min_ratio_4_to_16 = 2.8, max_ratio_4_to_16 = 5.2;
-constexpr double min_ratio_16_to_32 = 1.4, max_ratio_16_to_32 = 2.6;
+// 4 (1 + 4/n_ref) / (1 + 16/n_ref) = 3.97 and for 16 -> 32 spp 1.98 with
+// n_ref = 2048. Measured at 128x128 over seeds 1..6 and the five scenes
+// (docs/testrender.md) the ratios were 2.95..5.70 and 1.84..2.19: caustic paths
+// (light seen through mirrors and glass, found only by BSDF sampling) are
+// heavy-tailed, and a single firefly moves the 4-spp error. The bands below
+// hold that spread with a margin; a biased renderer (error plateaus, ratio
+// -> 1) or correlated samples (ratio far from 4) falls outside them.
+constexpr double min_ratio_4_to_16 = 2.5, max_ratio_4_to_16 = 6.5;
+constexpr double min_ratio_16_to_32 = 1.5, max_ratio_16_to_32 = 2.7;
 
 TEST_P(RefSet, RelMseFallsAsOneOverSpp)
 {
