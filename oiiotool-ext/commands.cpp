@@ -18,24 +18,100 @@ namespace {
 
 /// The window-side parameter every window filter takes.
 const Param size_param = { "SIZE", ParamType::integer, "odd window side, 1..255" };
+/// The parameters of the depth-of-field filter.
+const Param levels_param = { "LEVELS", ParamType::integer, "number of depth levels, >= 1" };
+const Param focus_param = { "FOCUS", ParamType::integer, "the level in focus, 0..LEVELS-1 (0 is nearest)" };
+const Param near_param = { "NEAR", ParamType::number, "depth mapped to the first level (nearer clamps)" };
+const Param far_param = { "FAR", ParamType::number, "depth mapped past the last level (farther clamps)" };
 
 }  // namespace
 
 const std::vector<Command>& command_table()
 {
     static const std::vector<Command> table = {
-        { "mean", "simple.h", { size_param }, {},
+        { "mean", "mean", "simple.h", { size_param }, {},
           "Box mean of the SIZE x SIZE window (finite values only).",
           "mcdtool render.exr --mean 5 -o clean.exr",
           [](const Call& c) { return mcdenoise::mean(c.dst, c.beauty, c.integer(0), {}, c.nthreads); } },
-        { "median", "simple.h", { size_param }, {},
+        { "median", "median", "simple.h", { size_param }, {},
           "Per-channel median of the SIZE x SIZE window.",
           "mcdtool render.exr --median 7 --gaussian 3 -o clean.exr",
           [](const Call& c) { return mcdenoise::median(c.dst, c.beauty, c.integer(0), {}, c.nthreads); } },
-        { "gaussian", "simple.h", { size_param }, {},
+        { "gaussian", "gaussian", "simple.h", { size_param }, {},
           "Binomial (Pascal's triangle) weighted mean of the SIZE x SIZE window.",
           "mcdtool render.exr --gaussian 3 -o clean.exr",
           [](const Call& c) { return mcdenoise::gaussian(c.dst, c.beauty, c.integer(0), {}, c.nthreads); } },
+        { "object-mean", "object_mean", "object.h", { size_param }, { Role::id },
+          "Mean over the window's pixels that share the center's object id.",
+          "mcdtool render.exr --object-mean 5 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::object_mean(c.dst, c.beauty, c.guide(Role::id), c.integer(0), {}, c.nthreads);
+          } },
+        { "object-median", "object_median", "object.h", { size_param }, { Role::id },
+          "Median over the window's pixels that share the center's object id (the report's best chain "
+          "is --object-median 7 --gaussian 3).",
+          "mcdtool render.exr --object-median 7 --gaussian 3 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::object_median(c.dst, c.beauty, c.guide(Role::id), c.integer(0), {}, c.nthreads);
+          } },
+        { "object-gaussian", "object_gaussian", "object.h", { size_param }, { Role::id },
+          "Binomial-weighted mean over the window's pixels that share the center's object id.",
+          "mcdtool render.exr --object-gaussian 5 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::object_gaussian(c.dst, c.beauty, c.guide(Role::id), c.integer(0), {},
+                                                c.nthreads);
+          } },
+        { "brdf-mean", "brdf_mean", "brdf.h", { size_param }, { Role::id, Role::reflid },
+          "Object mean that, at a specular pixel, also requires the same reflected object id.",
+          "mcdtool render.exr --brdf-mean 5 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::brdf_mean(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::reflid),
+                                          c.integer(0), {}, c.nthreads);
+          } },
+        { "brdf-median", "brdf_median", "brdf.h", { size_param }, { Role::id, Role::reflid },
+          "Median over the pixels the BRDF rule makes viable (fireflies on mirrors).",
+          "mcdtool render.exr --brdf-median 7 --brdf-gaussian 3 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::brdf_median(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::reflid),
+                                            c.integer(0), {}, c.nthreads);
+          } },
+        { "brdf-gaussian", "brdf_gaussian", "brdf.h", { size_param }, { Role::id, Role::reflid },
+          "Binomial-weighted mean over the pixels the BRDF rule makes viable.",
+          "mcdtool render.exr --brdf-gaussian 3 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::brdf_gaussian(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::reflid),
+                                              c.integer(0), {}, c.nthreads);
+          } },
+        { "normal-mean", "normal_mean", "normal.h", { size_param }, { Role::id, Role::normal },
+          "Mean over the pixels of the center's object, weighted by max(0, dot) of the normals.",
+          "mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N --normal-mean 5 -o out.exr",
+          [](const Call& c) {
+              return mcdenoise::normal_mean(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::normal),
+                                            c.integer(0), {}, c.nthreads);
+          } },
+        { "normal-gaussian", "normal_gaussian", "normal.h", { size_param }, { Role::id, Role::normal },
+          "As --normal-mean, each weight also multiplied by the binomial spatial weight.",
+          "mcdtool render.exr --normal-gaussian 5 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::normal_gaussian(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::normal),
+                                                c.integer(0), {}, c.nthreads);
+          } },
+        { "dof", "dof", "dof.h", { levels_param, focus_param }, { Role::id, Role::depth },
+          "Depth of field: the depth range (finite depths; >= 1e9, e.g. Cycles' background, is "
+          "infinitely far) is cut into LEVELS levels; a pixel at level l gets the object mean of side "
+          "1 + 2|l - FOCUS|.",
+          "mcdtool render.exr --dof 10 0 -o out.exr",
+          [](const Call& c) {
+              return mcdenoise::dof(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::depth), c.integer(0),
+                                    c.integer(1), 0.0f, 0.0f, {}, c.nthreads);
+          } },
+        { "dof-range", "dof", "dof.h", { levels_param, focus_param, near_param, far_param }, { Role::id, Role::depth },
+          "As --dof, with the levels spread over the depths [NEAR, FAR] instead of the image's range.",
+          "mcdtool render.exr --dof-range 10 4 1.5 20 -o out.exr",
+          [](const Call& c) {
+              return mcdenoise::dof(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::depth), c.integer(0),
+                                    c.integer(1), c.number(2), c.number(3), {}, c.nthreads);
+          } },
     };
     return table;
 }

@@ -55,6 +55,7 @@ using CallFn = bool (*)(const Call&);
 /// One row of the command table.
 struct Command {
     const char* name;              ///< typed as --name (dashes, not underscores)
+    const char* function;          ///< the mcdenoise function it calls
     const char* header;            ///< the library header that declares it
     std::vector<Param> params;
     std::vector<Role> roles;       ///< guides it needs, in argument order

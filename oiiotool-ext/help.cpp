@@ -67,6 +67,12 @@ std::string help_row(const std::string& name, const std::string& help)
     return row + wrap(help, name_column, help_width) + "\n";
 }
 
+/// `text` safe inside a Markdown table cell ('|' escaped).
+std::string cell(const std::string& text)
+{
+    return OIIO::Strutil::replace(text, "|", "\\|", true);
+}
+
 /// "id, normal": the roles a command needs, or "-".
 std::string roles_text(const Command& command)
 {
@@ -143,13 +149,13 @@ std::string help_markdown()
     md += "## Commands\n\n| command | guides | library call | what it does |\n|---|---|---|---|\n";
     for (const Command& command : command_table())
         md += format("| `{}` | {} | `mcdenoise::{}` ({}) | {} |\n", command_usage(command), roles_text(command),
-                     OIIO::Strutil::replace(command.name, "-", "_", true), command.header, command.help);
+                     command.function, command.header, cell(command.help));
     for (const Command& command : command_table()) {
         md += format("\n### `--{}`\n\n{}\n\n", command.name, command.help);
         md += "| parameter | type | meaning |\n|---|---|---|\n";
         for (const Param& param : command.params)
             md += format("| `{}` | {} | {} |\n", param.name,
-                         param.type == ParamType::integer ? "integer" : "number", param.help);
+                         param.type == ParamType::integer ? "integer" : "number", cell(param.help));
         if (!command.roles.empty())
             md += format("\nNeeds the guides: {}.\n", roles_text(command));
         md += format("\n```\n{}\n```\n", command.example);
@@ -165,14 +171,14 @@ std::string help_markdown()
           "|---|---|---|---|---|\n";
     for (const RoleInfo& info : role_table())
         md += format("| `{}` | `{}` | {} | {} | {} |\n", info.name, info.argument, channel_count_text(info),
-                     info.what, pass_names_text(info));
+                     cell(info.what), pass_names_text(info));
 
     md += "\n## Options\n";
     for (const std::string& group : option_groups) {
         md += format("\n### {}\n\n| option | meaning |\n|---|---|\n", group);
         for (const OptionSpec& option : option_table())
             if (group == option.group)
-                md += format("| `{}` | {} |\n", option_usage(option), option.help);
+                md += format("| `{}` | {} |\n", option_usage(option), cell(option.help));
     }
 
     md += "\n## Sequences\n\nA frame pattern in the input, `--aov` files, `-o` and `--preview` is "
