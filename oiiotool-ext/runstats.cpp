@@ -17,6 +17,8 @@ namespace {
 constexpr size_t bytes_per_rusage_unit = 1024;
 constexpr double bytes_per_mebibyte = 1024.0 * 1024.0;
 constexpr int seconds_per_minute = 60;
+/// Width of the key column of the --runstats report (fits every command name).
+constexpr int runstats_key_width = 18;
 
 /// "1:05" from a number of seconds.
 std::string minutes_seconds(double seconds)
@@ -40,13 +42,17 @@ void RunStats::add_command(const std::string& command, double seconds)
 
 std::string RunStats::report() const
 {
-    std::string text = format("mcdtool runstats:\n  frames        {}\n  total time    {:.3f} s\n", frames_,
-                              total_.seconds());
-    text += format("  read time     {:.3f} s\n  write time    {:.3f} s\n", read_seconds_, write_seconds_);
+    std::string text = "mcdtool runstats:\n";
+    auto row = [&text](const std::string& key, const std::string& value) {
+        text += format("  {:<{}} {}\n", key, runstats_key_width, value);
+    };
+    row("frames", std::to_string(frames_));
+    row("total time", format("{:.3f} s", total_.seconds()));
+    row("read time", format("{:.3f} s", read_seconds_));
+    row("write time", format("{:.3f} s", write_seconds_));
     for (const Entry& entry : commands_)
-        text += format("  {:<13} {:.3f} s ({} call{})\n", entry.command, entry.seconds, entry.calls,
-                       entry.calls == 1 ? "" : "s");
-    text += format("  peak memory   {:.1f} MB\n", double(peak_memory_bytes()) / bytes_per_mebibyte);
+        row(entry.command, format("{:.3f} s ({} call{})", entry.seconds, entry.calls, entry.calls == 1 ? "" : "s"));
+    row("peak memory", format("{:.1f} MB", double(peak_memory_bytes()) / bytes_per_mebibyte));
     return text;
 }
 
