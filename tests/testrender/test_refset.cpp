@@ -40,7 +40,7 @@ class RefSet : public ::testing::TestWithParam<const char*> {};
 // seed; the renderer is unbiased), so the expected ratio for 4 -> 16 spp is
 // 4 (1 + 4/n_ref) / (1 + 16/n_ref) = 3.97 and for 16 -> 32 spp 1.98 with
 // n_ref = 2048. Measured at 128x128 over seeds 1..6 and the five scenes
-// (docs/testrender.md) the ratios were 2.95..5.70 and 1.84..2.19: caustic paths
+// (docs/testrender.md) the ratios were 3.27..5.01 and 1.85..2.15: caustic paths
 // (light seen through mirrors and glass, found only by BSDF sampling) are
 // heavy-tailed, and a single firefly moves the 4-spp error. The bands below
 // hold that spread with a margin; a biased renderer (error plateaus, ratio
