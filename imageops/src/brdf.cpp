@@ -46,8 +46,8 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
     const int r = size / 2;
     const SameObjectAndReflection rule {
         ids, reflect,
-        uniform_map(ids.region, roi, r, [&](size_t i, size_t j) { return id[i] == id[j]; }),
-        uniform_map(ids.region, roi, r,
+        uniform_map(ids.region, roi, r, nthreads, [&](size_t i, size_t j) { return id[i] == id[j]; }),
+        uniform_map(ids.region, roi, r, nthreads,
                     [&](size_t i, size_t j) { return id[i] == id[j] && rid[i] == rid[j]; })
     };
     return run_window_filter(op, reduction, dst, beauty,

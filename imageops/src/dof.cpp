@@ -157,7 +157,7 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     std::vector<SameObject> rules;
     for (int side : sides) {
         sources.push_back(with_kernel(pixels, box_kernel(side)));
-        rules.push_back(same_object_rule(ids, roi, side));
+        rules.push_back(same_object_rule(ids, roi, side, nthreads));
     }
 
     ResultPixels result;

@@ -14,10 +14,10 @@ bool load_window_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& 
                               nthreads, ids);
 }
 
-SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size)
+SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size, int nthreads)
 {
     const std::vector<int64_t>& v = ids.values;
-    return { ids, uniform_map(ids.region, roi, size / 2,
+    return { ids, uniform_map(ids.region, roi, size / 2, nthreads,
                               [&](size_t i, size_t j) { return v[i] == v[j]; }) };
 }
 

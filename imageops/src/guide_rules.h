@@ -25,10 +25,11 @@ struct UniformMap {
 /// pixel of `region` carries the center's key, keys compared by `same(i, j)`
 /// on flat indices of `region`.
 template<class Same>
-UniformMap uniform_map(const OIIO::ROI& region, const OIIO::ROI& roi, int r, Same&& same)
+UniformMap uniform_map(const OIIO::ROI& region, const OIIO::ROI& roi, int r, int nthreads,
+                       Same&& same)
 {
-    const KeyRuns runs = key_runs(region, same);
-    return { roi, uniform_windows(runs, roi, r, same) };
+    const KeyRuns runs = key_runs(region, nthreads, same);
+    return { roi, uniform_windows(runs, roi, r, nthreads, same) };
 }
 
 /// Read a guide's object ids over what a window of side `size` reaches from
@@ -51,6 +52,7 @@ struct SameObject {
 };
 
 /// The object rule over `ids` for windows of side `size` around `roi`.
-SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size);
+SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size,
+                            int nthreads);
 
 }  // namespace mcdenoise

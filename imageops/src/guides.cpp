@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imagebufalgo_util.h>
 
+#include <atomic>
 #include <cmath>
 
 namespace mcdenoise {
@@ -37,37 +38,37 @@ bool check_guide(const char* op, const char* name, ImageBuf& dst, const ImageBuf
 
 namespace {
 
-// Reads `guide` over `region` as `Raw` values (pixels outside the guide's
-// data window flagged), then maps each through `convert(raw, inside)` on
-// `nthreads` threads.
+// Reads `guide` over `region` as `Raw` values and maps each pixel through
+// `convert(raw, inside)` (`inside`: within the guide's data window), strip
+// by strip on `nthreads` threads.
 template<class T, class Raw, class Convert>
 bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
                 int nthreads, OIIO::TypeDesc raw_type, GuidePlane<T>& plane,
                 Convert&& convert)
 {
     const int nc = guide.nchannels();
-    ROI read     = region;
-    read.chbegin = 0;
-    read.chend   = nc;
-    std::vector<Raw> raw(size_t(region.width()) * region.height() * nc);
-    if (!guide.get_pixels(read, raw_type, raw.data())) {
+    const ROI dw = guide.roi();
+    plane.region = region;
+    plane.values.resize(size_t(region.width()) * region.height());
+    std::atomic<bool> ok { true };
+    ROI rows    = region;
+    rows.chbegin = 0;
+    rows.chend   = nc;
+    OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
+        std::vector<Raw> raw(size_t(strip.width()) * strip.height() * nc);
+        if (!guide.get_pixels(strip, raw_type, raw.data())) {
+            ok = false;
+            return;
+        }
+        const Raw* in = raw.data();
+        for (int y = strip.ybegin; y < strip.yend; ++y)
+            for (int x = strip.xbegin; x < strip.xend; ++x, in += nc)
+                plane.values[plane.index(x, y)] = convert(in, dw.contains(x, y));
+    });
+    if (!ok) {
         dst.errorfmt("{}: could not read a guide: {}", op, guide.geterror());
         return false;
     }
-    const ROI dw  = guide.roi();
-    plane.region  = region;
-    plane.values.resize(size_t(region.width()) * region.height());
-    ROI rows      = region;
-    rows.chbegin  = 0;
-    rows.chend    = 1;
-    OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
-        for (int y = strip.ybegin; y < strip.yend; ++y)
-            for (int x = region.xbegin; x < region.xend; ++x) {
-                const size_t i    = plane.index(x, y);
-                const bool inside = dw.contains(x, y);
-                plane.values[i]   = convert(&raw[i * nc], inside);
-            }
-    });
     return true;
 }
 

@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/imagebufalgo_util.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>

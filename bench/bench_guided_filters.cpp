@@ -1,0 +1,82 @@
+// bench_guided_filters.cpp: the guided filters on a real testrender scene at
+// 1920x1080 (its file named by MCD_BENCH_SCENE, made by bench/speed_table),
+// side by side with the simple filters of the same size in the same run.
+#include <mcdenoise/mcdenoise.h>
+
+#include "support/render_file.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+using OIIO::ImageBuf;
+
+const testimg::Render& scene()
+{
+    static const testimg::Render r = [] {
+        const char* path = std::getenv("MCD_BENCH_SCENE");
+        testimg::Render loaded = testimg::read_render(path ? path : "");
+        if (!loaded.error.empty()) {
+            std::fprintf(stderr, "bench_guided_filters: set MCD_BENCH_SCENE to a testrender "
+                                 "file (%s)\n",
+                         loaded.error.c_str());
+            std::exit(2);
+        }
+        return loaded;
+    }();
+    return r;
+}
+
+template<class Filter>
+void run(benchmark::State& state, Filter&& filter)
+{
+    const int size = int(state.range(0));
+    for (auto _ : state) {
+        ImageBuf out = filter(scene(), size);
+        if (out.has_error())
+            state.SkipWithError(out.geterror().c_str());
+        benchmark::DoNotOptimize(out.localpixels());
+    }
+    state.SetItemsProcessed(state.iterations() * scene().beauty.spec().image_pixels());
+}
+
+#define MCD_BENCH(name, expr)                                                             \
+    void BM_##name(benchmark::State& state)                                              \
+    {                                                                                     \
+        run(state, [](const testimg::Render& r, int s) { return expr; });                 \
+    }                                                                                     \
+    BENCHMARK(BM_##name)->Arg(3)->Arg(7)->Unit(benchmark::kMillisecond)->UseRealTime()
+
+using namespace mcdenoise;
+MCD_BENCH(median, median(r.beauty, s));
+MCD_BENCH(object_median, object_median(r.beauty, r.object_id, s));
+MCD_BENCH(brdf_median, brdf_median(r.beauty, r.object_id, r.reflect_id, s));
+MCD_BENCH(mean, mean(r.beauty, s));
+MCD_BENCH(object_mean, object_mean(r.beauty, r.object_id, s));
+MCD_BENCH(brdf_mean, brdf_mean(r.beauty, r.object_id, r.reflect_id, s));
+MCD_BENCH(normal_mean, normal_mean(r.beauty, r.object_id, r.normal, s));
+MCD_BENCH(gaussian, gaussian(r.beauty, s));
+MCD_BENCH(object_gaussian, object_gaussian(r.beauty, r.object_id, s));
+MCD_BENCH(brdf_gaussian, brdf_gaussian(r.beauty, r.object_id, r.reflect_id, s));
+MCD_BENCH(normal_gaussian, normal_gaussian(r.beauty, r.object_id, r.normal, s));
+
+void BM_object_mean_19(benchmark::State& state)
+{
+    run(state, [](const testimg::Render& r, int) { return object_mean(r.beauty, r.object_id, 19); });
+}
+BENCHMARK(BM_object_mean_19)->Arg(19)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_dof_10_levels(benchmark::State& state)
+{
+    run(state, [](const testimg::Render& r, int) {
+        return dof(r.beauty, r.object_id, r.depth, 10, 0);
+    });
+}
+BENCHMARK(BM_dof_10_levels)->Arg(10)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
