@@ -28,8 +28,7 @@ template<class Same>
 UniformMap uniform_map(const OIIO::ROI& region, const OIIO::ROI& roi, int r, int nthreads,
                        Same&& same)
 {
-    const KeyRuns runs = key_runs(region, nthreads, same);
-    return { roi, uniform_windows(runs, roi, r, nthreads, same) };
+    return { roi, uniform_windows(region, roi, r, nthreads, same) };
 }
 
 /// Read a guide's object ids over what a window of side `size` reaches from
