@@ -45,10 +45,10 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
     const std::vector<int64_t>&id = ids.values, &rid = reflect.values;
     const int r = size / 2;
     const SameObjectAndReflection rule {
-        ids, reflect,
-        uniform_map(ids.region, roi, r, nthreads, [&](size_t i, size_t j) { return id[i] == id[j]; }),
-        uniform_map(ids.region, roi, r, nthreads,
-                    [&](size_t i, size_t j) { return id[i] == id[j] && rid[i] == rid[j]; })
+        ids, reflect, uniform_map(id_edges(ids, nthreads), roi, r, nthreads),
+        uniform_map(key_edges(ids.region, nthreads,
+                              [&](size_t i, size_t j) { return id[i] == id[j] && rid[i] == rid[j]; }),
+                    roi, r, nthreads)
     };
     return run_window_filter(op, reduction, dst, beauty,
                              { &beauty, &object_id, &reflect_id }, size, rule, roi, nthreads);

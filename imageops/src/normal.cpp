@@ -57,9 +57,12 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
     const std::vector<UnitNormal>& n = normals.values;
     const SameObjectWeightedByNormal rule {
         ids, normals,
-        uniform_map(ids.region, roi, size / 2, nthreads, [&](size_t i, size_t j) {
-            return id[i] == id[j] && n[i].x == n[j].x && n[i].y == n[j].y && n[i].z == n[j].z;
-        })
+        uniform_map(key_edges(ids.region, nthreads,
+                              [&](size_t i, size_t j) {
+                                  return id[i] == id[j] && n[i].x == n[j].x && n[i].y == n[j].y
+                                         && n[i].z == n[j].z;
+                              }),
+                    roi, size / 2, nthreads)
     };
     return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id, &normal },
                              size, rule, roi, nthreads);
