@@ -52,6 +52,20 @@ bool is_number(const std::string& text)
     return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
 }
 
+/// True if `arg` is a command or option as typed ("--median", "-o").
+bool is_known_name(const std::string& arg)
+{
+    if (arg.size() < 2 || arg[0] != '-')
+        return false;
+    std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
+    if (find_command(name))
+        return true;
+    for (const OptionSpec& option : option_table())
+        if (name == option.name)
+            return true;
+    return false;
+}
+
 /// Parses "ROLE=FILE[:CHANNELS]".
 AovRequest parse_aov(const std::string& typed)
 {
@@ -231,8 +245,7 @@ Options parse_command_line(const std::vector<std::string>& args)
         std::vector<std::string> values;
         for (size_t p = 0; p < nparams; ++p) {
             size_t at = i + 1 + p;
-            bool looks_like_option = at < args.size() && args[at].size() > 2 && args[at][0] == '-'
-                                     && !is_number(args[at]);
+            bool looks_like_option = at < args.size() && is_known_name(args[at]);
             if (at >= args.size() || looks_like_option)
                 throw UsageError(format("{} : missing argument (usage: {}{})", arg, usage,
                                         at < args.size() ? format("; got '{}'", args[at]) : ""));

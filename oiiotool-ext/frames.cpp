@@ -5,7 +5,6 @@
 
 #include <OpenImageIO/strutil.h>
 
-#include <regex>
 
 namespace mcdtool {
 
@@ -17,6 +16,8 @@ namespace {
 constexpr int lone_hash_digits = 4;
 /// More frames than this in one --frames list is surely a typo.
 constexpr long max_frames = 1000000;
+/// Digits a frame number may have (keeps every value inside an int).
+constexpr size_t max_frame_digits = 9;
 
 /// Where a frame pattern sits in a path, and how many digits it asks for.
 struct PatternSpan {
@@ -25,24 +26,80 @@ struct PatternSpan {
     int digits = 0;
 };
 
-/// Finds the first frame pattern in `path`.
+/// Length of the run of `ch` starting at `at` in `text`.
+size_t run_length(std::string_view text, size_t at, char ch)
+{
+    size_t end = at;
+    while (end < text.size() && text[end] == ch)
+        ++end;
+    return end - at;
+}
+
+/// Length of the decimal digits starting at `at` in `text`.
+size_t digit_count(std::string_view text, size_t at)
+{
+    size_t end = at;
+    while (end < text.size() && text[end] >= '0' && text[end] <= '9')
+        ++end;
+    return end - at;
+}
+
+/// Finds the first frame pattern in `path`: a run of '#', a run of '@', or
+/// '%' [0] [digits] 'd'.
 PatternSpan find_pattern(std::string_view path)
 {
-    static const std::regex pattern_re("(#+)|(@+)|%(0?)([0-9]*)d");
-    std::string text(path);
-    std::smatch match;
     PatternSpan span;
-    if (!std::regex_search(text, match, pattern_re))
-        return span;
-    span.begin = size_t(match.position(0));
-    span.length = size_t(match.length(0));
-    if (match[1].matched)
-        span.digits = match.length(1) == 1 ? lone_hash_digits : int(match.length(1));
-    else if (match[2].matched)
-        span.digits = int(match.length(2));
-    else
-        span.digits = match[4].length() ? OIIO::Strutil::stoi(match[4].str()) : 1;
+    for (size_t at = 0; at < path.size(); ++at) {
+        char ch = path[at];
+        if (ch == '#' || ch == '@') {
+            size_t length = run_length(path, at, ch);
+            int digits = ch == '#' && length == 1 ? lone_hash_digits : int(length);
+            return PatternSpan{ at, length, digits };
+        }
+        if (ch != '%')
+            continue;
+        size_t width_at = at + 1 + (at + 1 < path.size() && path[at + 1] == '0' ? 1 : 0);
+        size_t width_digits = digit_count(path, width_at);
+        size_t d_at = width_at + width_digits;
+        if (d_at < path.size() && path[d_at] == 'd' && width_digits <= 2) {
+            int digits = width_digits ? std::stoi(std::string(path.substr(width_at, width_digits))) : 1;
+            return PatternSpan{ at, d_at + 1 - at, digits };
+        }
+    }
     return span;
+}
+
+/// Reads an optionally negative integer of 1 to 9 digits at `at`, moving
+/// `at` past it; false if there is none.
+bool read_integer(std::string_view text, size_t& at, long& value)
+{
+    size_t start = at;
+    bool negative = at < text.size() && text[at] == '-';
+    size_t digits = digit_count(text, at + (negative ? 1 : 0));
+    if (digits == 0 || digits > max_frame_digits)
+        return false;
+    at += (negative ? 1 : 0) + digits;
+    value = std::stol(std::string(text.substr(start, at - start)));
+    return true;
+}
+
+/// One part of a frame list: "7", "1-48" or "1-10x2" (also "10-1", "-5--1").
+bool parse_range(std::string_view text, long& first, long& last, long& step)
+{
+    size_t at = 0;
+    if (!read_integer(text, at, first))
+        return false;
+    last = first;
+    step = 1;
+    if (at == text.size())
+        return true;
+    if (text[at] != '-' || !read_integer(text, ++at, last))
+        return false;
+    if (at == text.size())
+        return true;
+    if (text[at] != 'x' || !read_integer(text, ++at, step) || step < 0)
+        return false;
+    return at == text.size();
 }
 
 }  // namespace
@@ -68,17 +125,15 @@ std::string frame_path(std::string_view pattern, int frame)
 
 std::vector<int> parse_frame_list(std::string_view list)
 {
-    static const std::regex part_re("(-?[0-9]{1,9})(?:-(-?[0-9]{1,9})(?:x([0-9]{1,9}))?)?");
     std::vector<int> frames;
     for (const std::string& part : OIIO::Strutil::splits(list, ",")) {
-        std::smatch match;
         std::string text(OIIO::Strutil::strip(part));
-        if (text.empty() || text.size() > 24 || !std::regex_match(text, match, part_re))
+        long first = 0;
+        long last = 0;
+        long step = 0;
+        if (!parse_range(text, first, last, step))
             throw UsageError(format("--frames : cannot read '{}' in '{}' (expected e.g. 1-48, 1-10x2, 1,3,5)",
                                     part, list));
-        long first = std::stol(match[1].str());
-        long last = match[2].matched ? std::stol(match[2].str()) : first;
-        long step = match[3].matched ? std::stol(match[3].str()) : 1;
         if (step < 1)
             throw UsageError(format("--frames : step must be >= 1 in '{}'", part));
         long count = (last >= first ? last - first : first - last) / step + 1;

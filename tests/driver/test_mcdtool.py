@@ -157,6 +157,10 @@ def test_sequence(tmp_path):
     assert r.code == 0, r
     assert sorted(p for p in os.listdir(tmp_path / "clean") if p.startswith("list")) == [
         "list.0001.exr", "list.0003.exr"]
+    # Counting down, and '@' padding (one digit per '@').
+    r = run("shot/beauty.####.exr", "--frames", "3-2", "--median", 3, "-o", "clean/at.@@@.exr", cwd=tmp_path)
+    assert r.code == 0, r
+    assert (tmp_path / "clean/at.003.exr").exists() and (tmp_path / "clean/at.002.exr").exists()
 
 
 def test_sequence_frame_error_keeps_other_frames(tmp_path):
