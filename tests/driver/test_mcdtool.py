@@ -320,6 +320,16 @@ def test_testrender_file_discovery(tmp_path):
         assert f"{role:<8} <- {tmp_path / 'tr.exr'}: {channels}\n" in r.out, r
 
 
+def test_cycles_guided_filters(cycles_exr, tmp_path):
+    """IndexOB ids and Depth.Z with 1e10 background drive the guided filters."""
+    require_command("--dof")
+    for args in (["--object-median", 7, "--gaussian", 3], ["--dof", 4, 0], ["--normal-gaussian", 5]):
+        r = run(cycles_exr, *args, "-o", tmp_path / "out.exr")
+        assert r.code == 0, (args, r)
+        out, spec = read_image(tmp_path / "out.exr")
+        assert np.isfinite(out).all()
+
+
 def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
     r = run(cycles_exr, "--beauty", "My Layer.Combined", "--aov", f"normal={cycles_exr}:My Layer.Denoising Normal",
             "-v", "--median", 3, "-o", tmp_path / "out.exr")
