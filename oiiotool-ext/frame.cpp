@@ -125,13 +125,15 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     Guides guides = load_guides(input, input_path, found, options, path_of, files);
     if (options.verbose)
         report_channels(input_path, input, found, guides);
+    for (const Step& step : options.steps)  // before any work: fail fast on a missing guide
+        if (step.command)
+            require_guides(*step.command, guides, input_path, input.spec(), found);
 
     ImageBuf before = extract_channels(input, found.beauty);
     ImageBuf current = before;
     OutputBatch batch(stats);
     for (const Step& step : options.steps) {
         if (step.command) {
-            require_guides(*step.command, guides, input_path, input.spec(), found);
             current = run_command(step, current, guides, options, stats);
             continue;
         }
