@@ -433,6 +433,13 @@ def test_bad_data_window(tmp_path):
             "-o", tmp_path / "out.exr")
     check_failure(r, 1, "ids.exr", "does not cover the beauty's data window")
     assert_no_outputs(tmp_path, existing)
+    # A guide whose data window is larger than the beauty's is fine.
+    big = np.zeros((ids.shape[0] + 4, ids.shape[1] + 4, 1), np.float32)
+    big[2:-2, 2:-2, 0] = ids
+    write_image(tmp_path / "big_ids.exr", big, ["Y"], origin=(-2, -2))
+    r = run(tmp_path / "beauty.exr", "--aov", "id=" + str(tmp_path / "big_ids.exr"), "--median", 3,
+            "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
 
 
 def test_bad_missing_guide(tmp_path):
