@@ -107,7 +107,8 @@ const std::vector<OptionSpec>& option_table()
     static const std::vector<OptionSpec> table = {
         { "o", { "FILE" }, "Output",
           "Write the current image: every input channel and the metadata kept, the beauty "
-          "channels replaced, in the input's pixel type and compression. Atomic (temp file + rename).",
+          "channels replaced, in the input's pixel type and compression (a format that holds at most 4 "
+          "channels, like PNG, gets the beauty only). Atomic (temp file + rename).",
           [](Options& o, const std::vector<std::string>& a) { o.steps.push_back(Step{ nullptr, {}, a[0] }); } },
         { "d", { "TYPE" }, "Output", "Pixel type of the outputs: half, float, uint8, uint16 or uint32.",
           [](Options& o, const std::vector<std::string>& a) {

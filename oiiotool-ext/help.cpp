@@ -93,6 +93,7 @@ std::string pass_names_text(const RoleInfo& info)
 std::vector<std::string> option_examples()
 {
     return { "mcdtool 'shot/beauty.####.exr' --frames 1-48 --median 7 -o 'clean/beauty.####.exr'",
+             "mcdtool render.exr --median 7 --compare reference.exr",
              "mcdtool render.exr --median 7 -o clean.exr --preview before_after.png",
              "mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N -v --median 3 -o out.exr",
              "mcdtool render.exr --median 7 -d half --compression dwaa -o clean.exr --runstats" };
