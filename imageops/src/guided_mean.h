@@ -21,32 +21,40 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
 {
     const Kernel1D& k = src.kernel;
     const int r = k.radius, nc = src.nchannels;
-    const OIIO::ROI& reg = src.block().region;
+    const PixelBlock& block = src.block();
+    const OIIO::ROI& reg    = block.region;
     const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
     const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
     double* num = scratch;
-    double* den = scratch + nc;
+    double* den = scratch + nc;  // per channel when masked, else den[0] for all
     std::fill(scratch, scratch + 2 * nc, 0.0);
     for (int qy = ys.begin; qy < ys.end; ++qy) {
         const double wy = k.weights[size_t(qy - y + r)];
-        for (int qx = xs.begin; qx < xs.end; ++qx) {
+        const float* v  = block.pixel(xs.begin, qy);
+        for (int qx = xs.begin; qx < xs.end; ++qx, v += block.nchannels) {
             const bool center = qx == x && qy == y;
             if (!center && !rule.viable(x, y, qx, qy))
                 continue;
             const double w = wy * k.weights[size_t(qx - x + r)]
                              * (center ? 1.0 : rule.weight(x, y, qx, qy));
-            const float* v = src.block().pixel(qx, qy);
-            for (int c = 0; c < nc; ++c) {
-                const bool finite = !src.masked || v[nc + c] != 0.0f;
-                num[c] += finite ? w * v[c] : 0.0;
-                den[c] += finite ? w : 0.0;
+            if (src.masked) {
+                for (int c = 0; c < nc; ++c) {
+                    const double m = v[nc + c];  // 1 where finite, else 0 (value 0)
+                    num[c] += w * v[c];
+                    den[c] += w * m;
+                }
+            } else {
+                for (int c = 0; c < nc; ++c)
+                    num[c] += w * v[c];
+                den[0] += w;
             }
         }
     }
     int empty = 0;
     for (int c = 0; c < nc; ++c) {
-        const bool any = den[c] > 0.0;
-        out[c]         = any ? float(num[c] / den[c]) : 0.0f;
+        const double d = src.masked ? den[c] : den[0];
+        const bool any = d > 0.0;
+        out[c]         = any ? float(num[c] / d) : 0.0f;
         empty += !any;
     }
     return empty;
