@@ -216,11 +216,11 @@ std::string nearest(std::string_view typed, const std::vector<std::string>& cand
 Options parse_command_line(const std::vector<std::string>& args)
 {
     Options options;
-    std::vector<std::string> known;  // dashed names, for suggestions
+    std::vector<std::string> known;  // names without dashes, for suggestions
     for (const Command& command : command_table())
-        known.push_back(dashed(command.name));
+        known.push_back(command.name);
     for (const OptionSpec& option : option_table())
-        known.push_back(dashed(option.name));
+        known.push_back(option.name);
 
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
@@ -239,7 +239,7 @@ Options parse_command_line(const std::vector<std::string>& args)
                 option = &spec;
         if (!command && !option)
             throw UsageError(format("unknown command '{}'; did you mean '{}'? (mcdtool --help lists them)",
-                                    arg, nearest(arg, known)));
+                                    arg, dashed(nearest(name, known))));
 
         size_t nparams = command ? command->params.size() : option->params.size();
         std::string usage = command ? command_usage(*command) : option_usage(*option);

@@ -75,8 +75,8 @@ std::string dashed(std::string_view name);
 /// Parses argv into Options; throws UsageError naming the culprit.
 Options parse_command_line(const std::vector<std::string>& args);
 
-/// The known name (command, option or role) nearest to `typed` by edit
-/// distance, with dashes; empty if `candidates` is empty.
+/// The candidate nearest to `typed` by edit distance (Levenshtein with
+/// adjacent transpositions); the first of equals; empty if there is none.
 std::string nearest(std::string_view typed, const std::vector<std::string>& candidates);
 
 }  // namespace mcdtool
