@@ -9,6 +9,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -88,6 +89,10 @@ int main(int argc, char* argv[])
     case Mode::version: std::printf("%s\n", version_text().c_str()); return exit_ok;
     case Mode::run: break;
     }
+    bool writes = options.preview.size() || options.compare.size()
+                  || std::any_of(options.steps.begin(), options.steps.end(), [](const Step& s) { return !s.command; });
+    if (!writes && !options.verbose)
+        std::fprintf(stderr, "mcdtool WARNING: no -o, --compare or --preview: the result goes nowhere\n");
     if (options.threads > 0)
         OIIO::attribute("threads", options.threads);
     return run(options);
