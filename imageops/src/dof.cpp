@@ -147,10 +147,8 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     region.chbegin = roi.chbegin;
     region.chend   = roi.chend;
     PixelBlock block;
-    if (!load_block(beauty, region, block)) {
-        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+    if (!read_beauty(op, dst, beauty, region, block))
         return false;
-    }
     SeparableSource pixels;
     make_separable_source(std::move(block), beauty.roi(), box_kernel(1), nthreads, pixels);
     std::vector<SeparableSource> sources;

@@ -43,10 +43,8 @@ bool load_median_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
     source.region.chbegin = roi.chbegin;
     source.region.chend   = roi.chend;
     PixelBlock block;
-    if (!load_block(beauty, source.region, block)) {
-        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+    if (!read_beauty(op, dst, beauty, source.region, block))
         return false;
-    }
     source.planes = channel_planes(block, nthreads);
     source.nonfinite_share.reset();
     if (has_nonfinite(block, nthreads))

@@ -77,6 +77,15 @@ bool load_block(const ImageBuf& img, ROI region, PixelBlock& block)
     return img.get_pixels(region, TypeDesc::FLOAT, block.owned.data());
 }
 
+bool read_beauty(const char* op, ImageBuf& dst, const ImageBuf& beauty, const ROI& region,
+                 PixelBlock& block)
+{
+    if (load_block(beauty, region, block))
+        return true;
+    dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+    return false;
+}
+
 bool has_nonfinite(const PixelBlock& block, int nthreads)
 {
     const std::ptrdiff_t n = std::ptrdiff_t(block.width()) * block.nchannels;

@@ -43,6 +43,11 @@ struct PixelBlock {
 /// Returns false, with the image's error, if the pixels cannot be read.
 bool load_block(const OIIO::ImageBuf& img, OIIO::ROI region, PixelBlock& block);
 
+/// `load_block` for an operation's beauty: on failure sets `dst`'s error,
+/// prefixed with `op`, and returns false.
+bool read_beauty(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                 const OIIO::ROI& region, PixelBlock& block);
+
 /// True if any value of `block` is NaN or infinite.
 bool has_nonfinite(const PixelBlock& block, int nthreads);
 

@@ -75,10 +75,8 @@ bool load_separable_source(const char* op, ImageBuf& dst, const ImageBuf& beauty
     region.chbegin = roi.chbegin;
     region.chend   = roi.chend;
     PixelBlock block;
-    if (!load_block(beauty, region, block)) {
-        dst.errorfmt("{}: could not read the beauty pixels: {}", op, beauty.geterror());
+    if (!read_beauty(op, dst, beauty, region, block))
         return false;
-    }
     make_separable_source(std::move(block), beauty.roi(), std::move(kernel), nthreads,
                           source);
     return true;
