@@ -63,37 +63,46 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
 /// The guided weighted mean over the pixels of `strip` that `selected(x, y)`
 /// picks: `rule.uniform(x, y)` pixels from the separable fast path, the
 /// others neighbour by neighbour. Rows with no selected pixel are skipped.
-template<class Rule, class Selected>
+/// With `AllSelected`, fast rows are written straight into `result` and only
+/// the other pixels are overwritten.
+template<bool AllSelected = false, class Rule, class Selected>
 void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& selected,
                        const OIIO::ROI& strip, ResultPixels& result)
 {
     const int nc = src.nchannels, w = strip.width();
     SeparableMeanRows fast(src, strip);
-    std::vector<float> fast_row(size_t(w) * nc);
+    std::vector<float> fast_row(AllSelected ? 0 : size_t(w) * nc);
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
+    std::vector<uint8_t> uniform(static_cast<size_t>(w));
     std::vector<double> scratch(size_t(2 * nc));
+    const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
         bool any_selected = false, any_uniform = false;
         for (int x = strip.xbegin; x < strip.xend; ++x) {
             const bool s = selected(x, y);
+            const bool u = s && rule.uniform(x, y);
+            uniform[size_t(x - strip.xbegin)] = u;
             any_selected |= s;
-            any_uniform |= s && rule.uniform(x, y);
+            any_uniform |= u;
         }
         if (!any_selected)
             continue;
-        if (any_uniform)
-            fast.row(y, fast_row.data(), nc, fast_empty.data());
+        float* out_row = result.pixel(strip.xbegin, y);
+        if (any_uniform) {
+            if (AllSelected)
+                fast.row(y, out_row, stride, fast_empty.data());
+            else
+                fast.row(y, fast_row.data(), nc, fast_empty.data());
+        }
         for (int x = strip.xbegin; x < strip.xend; ++x) {
-            if (!selected(x, y))
-                continue;
-            float* out = result.pixel(x, y);
-            if (rule.uniform(x, y)) {
-                const float* f = fast_row.data() + size_t(x - strip.xbegin) * nc;
-                for (int c = 0; c < nc; ++c)
-                    out[c] = f[c];
-                empty += fast_empty[size_t(x - strip.xbegin)];
-            } else {
+            const size_t i = size_t(x - strip.xbegin);
+            float* out     = out_row + std::ptrdiff_t(i) * stride;
+            if (uniform[i]) {
+                if (!AllSelected)
+                    std::copy_n(fast_row.data() + i * nc, nc, out);
+                empty += fast_empty[i];
+            } else if (AllSelected || selected(x, y)) {
                 empty += guided_mean_pixel(src, rule, x, y, scratch.data(), out);
             }
         }
