@@ -77,6 +77,15 @@ MCD_INLINE void window_medians(const float* const* rows, int x, float* medians)
 }
 
 template<int K>
+void slot_medians8(const float* slots, float* medians)
+{
+    Vec<8> v[K * K + 1];
+    std::memcpy(v, slots, sizeof(Vec<8>) * K * K);
+    run_ops<K, 8>(v, std::make_index_sequence<size_t(WindowNet<K>::net.count)>());
+    std::memcpy(medians, &v[WindowNet<K>::net.result], sizeof(Vec<8>));
+}
+
+template<int K>
 void medians8(const float* const* rows, int x, float* medians)
 {
     window_medians<K, 8>(rows, x, medians);
@@ -118,6 +127,17 @@ MedianKernel wide_median_kernel(int size)
     case 7: return { medians16<7>, 16 };
     case 9: return { medians16<9>, 16 };
     default: return {};
+    }
+}
+
+SlotMedians slot_median_kernel(int size)
+{
+    switch (size) {
+    case 3: return slot_medians8<3>;
+    case 5: return slot_medians8<5>;
+    case 7: return slot_medians8<7>;
+    case 9: return slot_medians8<9>;
+    default: return nullptr;
     }
 }
 

@@ -16,11 +16,21 @@ float median_in_place(float* values, int n);
 /// at x - r .. x + lanes - 1 + r). Writes `lanes` values.
 using WindowMedians = void (*)(const float* const* rows, int x, float* medians);
 
+/// Medians of 8 windows of side `size` given slot by slot: `slots[i * 8 + l]`
+/// is value i (row-major in the window) of window l. Writes 8 values.
+using SlotMedians = void (*)(const float* slots, float* medians);
+
 /// A network kernel and how many windows it takes at once.
 struct MedianKernel {
     WindowMedians run = nullptr;
     int lanes         = 0;
 };
+
+/// The 8-lane network for windows of side `size` taking explicit slots
+/// (null where no network serves the size). Used for windows only part of
+/// which is viable: the others' slots hold -inf and +inf in equal numbers,
+/// which leaves the median of the viable values in the middle.
+SlotMedians slot_median_kernel(int size);
 
 /// The widest network kernel this processor runs for windows of side
 /// `size`, and the 8-lane one (for shorter runs); `run` is null when no

@@ -10,6 +10,7 @@
 #include "pixel_block.h"
 #include "window.h"
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -54,7 +55,12 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
     const OIIO::ROI& reg     = src.region;
     const MedianKernel wide   = wide_median_kernel(k);
     const MedianKernel narrow = narrow_median_kernel(k);
+    const SlotMedians by_slots = slot_median_kernel(k);
     const bool net            = wide.run != nullptr;
+    constexpr int lanes8      = 8;
+    std::vector<float> slots_low(net ? size_t(k) * k * lanes8 : 0);
+    std::vector<float> slots_high(slots_low.size());
+    std::vector<int> pending;  // whole windows waiting for a masked batch
     std::vector<const float*> rows(static_cast<size_t>(k), nullptr);
     std::vector<float> gathered(size_t(k) * k);
     std::vector<char> fast(size_t(strip.width()));
@@ -75,6 +81,54 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
             network_batch(wide, c, x, out_row);
         for (; x < end; x += narrow.lanes)
             network_batch(narrow, c, std::min(x, end - narrow.lanes), out_row);
+    };
+    // Medians of up to 8 whole windows of one row, each over its viable
+    // finite values: the others' slots get -inf and +inf alternately, so
+    // with an even count left out the middle slot holds the median; with an
+    // odd count, starting with -inf gives the lower of the two middle values
+    // and starting with +inf the upper one, whose mean is the median.
+    auto masked_batch = [&](int c, int y, const int* xs, int n, float* out_row) {
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        int left_out[lanes8];
+        bool odd = false;
+        for (int l = 0; l < lanes8; ++l) {
+            const int x = xs[std::min(l, n - 1)];
+            int count   = 0;
+            for (int dy = -r, i = 0; dy <= r; ++dy) {
+                const float* row = src.plane_row(c, y + dy);
+                for (int dx = -r; dx <= r; ++dx, ++i) {
+                    const float v = row[x + dx];
+                    const bool ok = std::isfinite(v)
+                                    && ((dx == 0 && dy == 0) || rule.viable(x, y, x + dx, y + dy));
+                    const bool low_first = count % 2 == 0;
+                    slots_low[size_t(i * lanes8 + l)]  = ok ? v : (low_first ? -inf : inf);
+                    slots_high[size_t(i * lanes8 + l)] = ok ? v : (low_first ? inf : -inf);
+                    count += !ok;
+                }
+            }
+            left_out[l] = count;
+            odd |= count % 2 == 1;
+        }
+        float low[lanes8], high[lanes8];
+        by_slots(slots_low.data(), low);
+        if (odd)
+            by_slots(slots_high.data(), high);
+        for (int l = 0; l < n; ++l) {
+            float& out = out_row[(xs[l] - strip.xbegin) * result.pixel_stride() + c];
+            if (left_out[l] == k * k) {
+                out = 0.0f;
+                ++empty;
+            } else {
+                out = left_out[l] % 2 == 0 ? low[l]
+                                           : float(0.5 * (double(low[l]) + double(high[l])));
+            }
+        }
+    };
+    auto flush_pending = [&](int c, int y, float* out_row) {
+        for (size_t b = 0; b < pending.size(); b += lanes8)
+            masked_batch(c, y, pending.data() + b,
+                         int(std::min<size_t>(lanes8, pending.size() - b)), out_row);
+        pending.clear();
     };
     auto gather_one = [&](int c, int x, int y) {
         const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
@@ -103,21 +157,30 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
             auto by_network = [&](int x) {
                 return fast[size_t(x - strip.xbegin)] && src.finite_window(c, x, y);
             };
+            // Whole windows not taken by a plain network run wait for a
+            // masked batch; clipped ones are selected in place.
+            auto masked_or_gathered = [&](int x) {
+                if (whole_rows && x - r >= reg.xbegin && x + r < reg.xend)
+                    pending.push_back(x);
+                else
+                    gather_one(c, x, y);
+            };
             int x = strip.xbegin;
             while (x < strip.xend) {
-                int run = x;  // [x, run): windows the network can take
+                int run = x;  // [x, run): windows the plain network can take
                 while (run < strip.xend && by_network(run))
                     ++run;
                 if (run > x && run - x >= narrow.lanes) {
                     network_run(c, x, run, out_row);
                 } else {
                     for (int g = x; g < run; ++g)
-                        gather_one(c, g, y);
+                        masked_or_gathered(g);
                 }
                 x = run;
                 if (x < strip.xend)  // the window that ended the run
-                    gather_one(c, x++, y);
+                    masked_or_gathered(x++);
             }
+            flush_pending(c, y, out_row);
         }
     }
     result.empty_windows += empty;
