@@ -34,6 +34,20 @@ def run(*args, cwd=None, env=None):
     return Result(proc)
 
 
+def check_failure(result, code, *needles):
+    """`result` failed with exit `code` and one stderr line holding `needles`."""
+    assert result.code == code, result
+    lines = result.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("mcdtool ERROR: "), result
+    for needle in needles:
+        assert needle in lines[0], result
+
+
+def assert_no_outputs(directory, before):
+    """No new file (output or temp) appeared in `directory`."""
+    assert sorted(os.listdir(directory)) == sorted(before)
+
+
 def write_image(path, pixels, names, fmt="half", compression=None, origin=(0, 0), attrs=None):
     """Writes `pixels` (H x W x C float) with channel `names` to `path`."""
     h, w, c = pixels.shape
