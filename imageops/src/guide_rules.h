@@ -3,10 +3,8 @@
 #pragma once
 
 #include "guides.h"
-#include "operation.h"
-#include "pixel_block.h"
+#include "window.h"
 
-#include <OpenImageIO/parallel.h>
 
 #include <cstdint>
 #include <vector>
@@ -24,17 +22,23 @@ struct UniformMap {
     }
 };
 
-/// 1 at each pixel of `region` with a 4-neighbour (in `region`) of another
-/// key, keys compared by `same(i, j)` on flat row-major indices of `region`.
+/// Where keys change: 1 at each pixel of `region` with a 4-neighbour (in
+/// `region`) of another key, keys compared by `same(i, j)` on flat
+/// row-major indices of `region`.
+struct KeyEdges {
+    OIIO::ROI region;
+    std::vector<uint8_t> flags;
+};
+
 template<class Same>
-PixelBlock key_edges(const OIIO::ROI& region, int nthreads, Same&& same);
+KeyEdges key_edges(const OIIO::ROI& region, int nthreads, Same&& same);
 
 /// Conservatively, the windows of radius `r` around the pixels of `roi` that
 /// are one key: those holding no pixel next to a key change (a window with
 /// two keys always holds such a pair; a window touched from outside is
-/// wrongly left out, which only sends it down the slow path). `edges` is
-/// `key_edges` over the region the windows reach.
-UniformMap uniform_map(PixelBlock edges, const OIIO::ROI& roi, int r, int nthreads);
+/// wrongly left out, which only sends it down the slow path). `edges` must
+/// cover the region the windows reach.
+UniformMap uniform_map(const KeyEdges& edges, const OIIO::ROI& roi, int r, int nthreads);
 
 /// Read a guide's object ids over what a window of side `size` reaches from
 /// `roi`, after checking the guide.
@@ -56,33 +60,28 @@ struct SameObject {
 };
 
 /// Where object ids change, over the ids' region.
-PixelBlock id_edges(const IdPlane& ids, int nthreads);
+KeyEdges id_edges(const IdPlane& ids, int nthreads);
 
 /// The object rule over `ids` for windows of side `size` around `roi`.
 SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size,
                             int nthreads);
 
 template<class Same>
-PixelBlock key_edges(const OIIO::ROI& region, int nthreads, Same&& same)
+KeyEdges key_edges(const OIIO::ROI& region, int nthreads, Same&& same)
 {
-    const int w = region.width(), h = region.height();
-    PixelBlock edges;
-    edges.region         = region;
-    edges.region.chbegin = 0;
-    edges.region.chend   = 1;
-    edges.nchannels      = 1;
-    edges.row_stride     = w;
-    edges.owned.resize(size_t(w) * h);
-    edges.data = edges.owned.data();
-    float* out = edges.owned.data();
-    OIIO::parallel_for(0, h, [&](int64_t y) {
+    KeyEdges edges { region, std::vector<uint8_t>(region.npixels()) };
+    uint8_t* flags = edges.flags.data();
+    parallel_rows(region, nthreads, [&, flags](int ay) {
+        // Local copies: byte stores could otherwise alias the bounds.
+        const int w = region.width(), h = region.height(), y = ay - region.ybegin;
+        uint8_t* out = flags + size_t(y) * w;
+        const size_t row = size_t(y) * w;
         for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y) * w + x;
-            const bool edge = (x > 0 && !same(i, i - 1)) || (x < w - 1 && !same(i, i + 1))
-                              || (y > 0 && !same(i, i - w)) || (y < h - 1 && !same(i, i + w));
-            out[i] = edge ? 1.0f : 0.0f;
+            const size_t i = row + x;
+            out[x] = (x > 0 && !same(i, i - 1)) || (x < w - 1 && !same(i, i + 1))
+                     || (y > 0 && !same(i, i - w)) || (y < h - 1 && !same(i, i + w));
         }
-    }, OIIO::paropt(nthreads));
+    });
     return edges;
 }
 

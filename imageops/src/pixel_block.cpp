@@ -2,6 +2,8 @@
 // derived blocks the filters read (finite masks, channel planes).
 #include "pixel_block.h"
 
+#include "window.h"
+
 #include <OpenImageIO/imagebufalgo_util.h>
 
 #include <atomic>
@@ -33,19 +35,6 @@ inline uint32_t is_nonfinite_bits(float v)
     uint32_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     return (bits & 0x7f800000u) == 0x7f800000u;
-}
-
-// Run `row_fn(y)` for every row of `block`, rows split among threads.
-template<class RowFn>
-void for_each_row(const PixelBlock& block, int nthreads, RowFn&& row_fn)
-{
-    ROI rows = block.region;
-    rows.chbegin = 0;
-    rows.chend   = 1;
-    OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
-        for (int y = strip.ybegin; y < strip.yend; ++y)
-            row_fn(y);
-    });
 }
 
 // An owned block with `nchannels` channels over `region`.
@@ -90,7 +79,7 @@ bool has_nonfinite(const PixelBlock& block, int nthreads)
 {
     const std::ptrdiff_t n = std::ptrdiff_t(block.width()) * block.nchannels;
     std::atomic<bool> found { false };
-    for_each_row(block, nthreads, [&](int y) {
+    parallel_rows(block.region, nthreads, [&](int y) {
         const float* row = block.row(y);
         uint32_t bad     = 0;
         for (std::ptrdiff_t i = 0; i < n; ++i)
@@ -105,7 +94,7 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
 {
     const int nc   = src.nchannels;
     PixelBlock out = owned_block(src.region, 2 * nc);
-    for_each_row(src, nthreads, [&](int y) {
+    parallel_rows(src.region, nthreads, [&](int y) {
         const float* in = src.row(y);
         float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
         for (int x = 0; x < src.width(); ++x, in += nc, dst += 2 * nc)
@@ -121,7 +110,7 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
 PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads)
 {
     PixelBlock out = owned_block(src.region, src.nchannels);
-    for_each_row(src, nthreads, [&](int y) {
+    parallel_rows(src.region, nthreads, [&](int y) {
         const float* in = src.row(y);
         float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
         for (std::ptrdiff_t i = 0; i < out.row_stride; ++i)
@@ -136,7 +125,7 @@ std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int 
     std::vector<std::unique_ptr<float[]>> planes;
     for (int c = 0; c < nc; ++c)
         planes.emplace_back(new float[size_t(w) * src.height()]);
-    for_each_row(src, nthreads, [&](int y) {
+    parallel_rows(src.region, nthreads, [&](int y) {
         const float* in     = src.row(y);
         const size_t offset = size_t(y - src.region.ybegin) * w;
         for (int c = 0; c < nc; ++c) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo_util.h>
 
 #include <algorithm>
 #include <string>
@@ -38,5 +39,19 @@ int restart_interval(int radius);
 
 /// The last restart point at or before `x`.
 int restart_at_or_before(int x, int origin, int interval);
+
+/// Run `row_fn(y)` for every row y of `rows` (its x range sets the work per
+/// row), rows split among `nthreads` threads like any image operation.
+template<class RowFn>
+void parallel_rows(const OIIO::ROI& rows, int nthreads, RowFn&& row_fn)
+{
+    OIIO::ROI one = rows;
+    one.chbegin   = 0;
+    one.chend     = 1;
+    OIIO::ImageBufAlgo::parallel_image(one, nthreads, [&](OIIO::ROI strip) {
+        for (int y = strip.ybegin; y < strip.yend; ++y)
+            row_fn(y);
+    });
+}
 
 }  // namespace mcdenoise
