@@ -100,6 +100,14 @@ int parse_threads(const std::string& text)
     return OIIO::Strutil::stoi(text);
 }
 
+/// Converts a --memory-limit argument (MiB, >= 1).
+uint64_t parse_memory_limit(const std::string& text)
+{
+    if (!is_integer(text) || OIIO::Strutil::stoi(text) < 1)
+        throw UsageError(format("--memory-limit : expected a whole number of MiB >= 1, got '{}'", text));
+    return uint64_t(OIIO::Strutil::stoi(text));
+}
+
 }  // namespace
 
 const std::vector<OptionSpec>& option_table()
@@ -154,6 +162,10 @@ const std::vector<OptionSpec>& option_table()
           [](Options& o, const std::vector<std::string>& a) { o.view = a[0]; } },
         { "threads", { "N" }, "Diagnostics", "Threads per filter (0: all cores).",
           [](Options& o, const std::vector<std::string>& a) { o.threads = parse_threads(a[0]); } },
+        { "memory-limit", { "MB" }, "Diagnostics",
+          "Refuse, with an error naming the file, an image or a frame whose pixels need more than MB MiB "
+          "(default: the machine's physical memory). Checked from the file headers before allocating.",
+          [](Options& o, const std::vector<std::string>& a) { o.memory_limit_mb = parse_memory_limit(a[0]); } },
         { "runstats", {}, "Diagnostics", "Print time per command, I/O time and peak memory at the end.",
           [](Options& o, const std::vector<std::string>&) { o.runstats = true; } },
         { "v", {}, "Diagnostics", "Verbose: the channels used for each role, and each step.",

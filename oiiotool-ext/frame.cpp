@@ -8,6 +8,7 @@
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
+#include "limits.h"
 #include "output.h"
 #include "preview.h"
 
@@ -85,6 +86,17 @@ void report_channels(const std::string& input_path, const ImageBuf& input, const
     }
 }
 
+/// Float bytes a frame holds at its peak: the input and its output copy,
+/// the beauty before, current and being written, and the guides.
+uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides)
+{
+    constexpr uint64_t beauty_buffers = 3;
+    uint64_t channels = 2 * uint64_t(input.nchannels()) + beauty_buffers * found.beauty.size();
+    for (const auto& [role, guide] : guides.images)
+        channels += uint64_t(guide.nchannels());
+    return float_bytes(input.spec().image_pixels(), channels);
+}
+
 /// Runs one command: exactly one library call, timed, errors forwarded.
 ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, const Options& options,
                      RunStats& stats)
@@ -119,10 +131,13 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     refuse_overwriting_inputs(options, path_of);
 
     std::string input_path = path_of(options.input);
-    ImageFiles files(stats);
+    const uint64_t memory_limit = memory_limit_bytes(options.memory_limit_mb);
+    ImageFiles files(stats, memory_limit);
     const ImageBuf& input = files.get(input_path, "input");
     Discovery found = discover_channels(input.spec(), options.beauty_channels, input_path);
     Guides guides = load_guides(input, input_path, found, options, path_of, files);
+    require_memory(frame_bytes(input, found, guides), memory_limit, input_path,
+                   "this frame (input, output copy, 3 beauty buffers and the guides, as float)");
     if (options.verbose)
         report_channels(input_path, input, found, guides);
     for (const Step& step : options.steps)  // before any work: fail fast on a missing guide

@@ -2,33 +2,50 @@
 #include "input.h"
 
 #include "error.h"
+#include "limits.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <algorithm>
+
 namespace mcdtool {
 
 using OIIO::Strutil::fmt::format;
 
-ImageBuf read_image(const std::string& path, std::string_view context)
+namespace {
+
+/// The one-line reason `image` could not be read.
+std::string read_error(const ImageBuf& image)
+{
+    std::string reason = one_line(image.geterror());
+    std::string global = one_line(OIIO::geterror());
+    return reason.empty() ? (global.empty() ? "unknown error" : global) : reason;
+}
+
+}  // namespace
+
+ImageBuf read_image(const std::string& path, std::string_view context, uint64_t memory_limit)
 {
     if (!OIIO::Filesystem::exists(path))
         throw RunError(format("{} : cannot read '{}': no such file", context, path));
     if (OIIO::Filesystem::is_directory(path))
         throw RunError(format("{} : cannot read '{}': it is a directory", context, path));
-    ImageBuf image(path);
-    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT) || image.has_error()) {
-        std::string reason = one_line(image.geterror());
-        std::string global = one_line(OIIO::geterror());
-        throw RunError(format("{} : cannot read '{}': {}", context, path,
-                              reason.empty() ? (global.empty() ? "unknown error" : global) : reason));
-    }
+    ImageBuf image;
+    if (!image.init_spec(path, 0, 0) || image.has_error())
+        throw RunError(format("{} : cannot read '{}': {}", context, path, read_error(image)));
+    const OIIO::ImageSpec& spec = image.spec();
+    if (spec.deep)
+        throw RunError(format("{} : cannot read '{}': deep images are not supported", context, path));
+    require_memory(float_bytes(spec.image_pixels(), uint64_t(std::max(spec.nchannels, 0))), memory_limit,
+                   std::string(context),
+                   format("'{}' ({} x {}, {} channels, as float)", path, spec.width, spec.height, spec.nchannels));
+    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT) || image.has_error())
+        throw RunError(format("{} : cannot read '{}': {}", context, path, read_error(image)));
     if (image.nsubimages() > 1)
         throw RunError(format("{} : '{}' has {} parts (subimages); only single-part files are supported, "
                               "split it with oiiotool first", context, path, image.nsubimages()));
-    if (image.deep())
-        throw RunError(format("{} : cannot read '{}': deep images are not supported", context, path));
     return image;
 }
 
@@ -38,7 +55,7 @@ const ImageBuf& ImageFiles::get(const std::string& path, std::string_view contex
     if (found != images_.end())
         return found->second;
     Timer timer;
-    ImageBuf image = read_image(path, context);
+    ImageBuf image = read_image(path, context, memory_limit_);
     stats_.add_read(timer.seconds());
     return images_.emplace(path, std::move(image)).first->second;
 }

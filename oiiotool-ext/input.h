@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -17,18 +18,20 @@ using OIIO::ImageBuf;
 
 /// Reads all pixels of subimage 0 of `path` as float. Throws RunError
 /// "<context> : cannot read '<path>': <reason>" for missing, unreadable or
-/// truncated files.
-ImageBuf read_image(const std::string& path, std::string_view context);
+/// truncated files, and before allocating anything when its float pixels
+/// would exceed `memory_limit` bytes (limits.h).
+ImageBuf read_image(const std::string& path, std::string_view context, uint64_t memory_limit);
 
 /// The images read for one frame, by path.
 class ImageFiles {
 public:
-    explicit ImageFiles(RunStats& stats) : stats_(stats) {}
+    ImageFiles(RunStats& stats, uint64_t memory_limit) : stats_(stats), memory_limit_(memory_limit) {}
     /// The image at `path`, read on first use (timed as I/O).
     const ImageBuf& get(const std::string& path, std::string_view context);
 
 private:
     RunStats& stats_;
+    uint64_t memory_limit_;
     std::map<std::string, ImageBuf> images_;
 };
 

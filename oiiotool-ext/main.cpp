@@ -1,99 +1,13 @@
-// main.cpp: mcdtool's entry point: parse, then run every frame, report
-// errors with the frame number, print --runstats, choose the exit status.
-#include "error.h"
-#include "frame.h"
-#include "frames.h"
-#include "help.h"
-#include "options.h"
-#include "runstats.h"
+// main.cpp: mcdtool's entry point: temp files are removed on SIGINT and
+// SIGTERM, then the program runs (driver.h).
+#include "cleanup.h"
+#include "driver.h"
 
-#include <OpenImageIO/imageio.h>
-
-#include <algorithm>
-#include <cstdio>
-#include <optional>
 #include <string>
 #include <vector>
 
-using namespace mcdtool;
-
-namespace {
-
-/// Prints a one-line error on stderr.
-void print_error(const std::string& message)
-{
-    std::fprintf(stderr, "mcdtool ERROR: %s\n", message.c_str());
-}
-
-/// Runs every frame (or the single image); returns the exit status.
-int run(const Options& options)
-{
-    std::vector<std::optional<int>> frames;
-    if (options.frames.empty())
-        frames.push_back(std::nullopt);
-    else
-        for (int frame : parse_frame_list(options.frames))
-            frames.push_back(frame);
-
-    RunStats stats;
-    Progress progress(frames.size());
-    size_t failed = 0;
-    size_t done = 0;
-    for (const std::optional<int>& frame : frames) {
-        std::string where = frame ? "frame " + std::to_string(*frame) + ": " : "";
-        try {
-            FrameOutcome outcome = run_frame(options, frame, stats);
-            if (outcome == FrameOutcome::skipped && options.verbose) {
-                progress.clear();
-                std::printf("mcdtool: %sskipped, outputs exist\n", where.c_str());
-            }
-        } catch (const RunError& error) {
-            progress.clear();
-            print_error(where + error.what());
-            ++failed;
-        } catch (const std::exception& error) {
-            progress.clear();
-            print_error(where + "internal error: " + error.what());
-            ++failed;
-        }
-        stats.add_frame();
-        progress.update(++done, frame.value_or(0));
-    }
-    progress.finish();
-    if (options.runstats)
-        std::printf("%s", stats.report().c_str());
-    if (failed && frames.size() > 1)
-        print_error(std::to_string(failed) + " of " + std::to_string(frames.size()) + " frames failed");
-    return failed ? exit_run_error : exit_ok;
-}
-
-}  // namespace
-
 int main(int argc, char* argv[])
 {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) {
-        std::fprintf(stderr, "%s", help_text().c_str());
-        return exit_usage_error;
-    }
-    Options options;
-    try {
-        options = parse_command_line(args);
-    } catch (const UsageError& error) {
-        print_error(error.what());
-        return exit_usage_error;
-    }
-    switch (options.mode) {
-    case Mode::help: std::printf("%s", help_text().c_str()); return exit_ok;
-    case Mode::help_markdown: std::printf("%s", help_markdown().c_str()); return exit_ok;
-    case Mode::version: std::printf("%s\n", version_text().c_str()); return exit_ok;
-    case Mode::run: break;
-    }
-    bool writes = options.preview.size() || options.compare.size()
-                  || std::any_of(options.steps.begin(), options.steps.end(), [](const Step& s) { return !s.command; });
-    if (!writes && !options.verbose)
-        std::fprintf(stderr, "mcdtool WARNING: no -o, --compare or --preview: the result goes nowhere\n");
-    if (options.threads > 0)
-        OIIO::attribute("threads", options.threads);
-    return run(options);
+    mcdtool::install_interrupt_cleanup();
+    return mcdtool::run_mcdtool(std::vector<std::string>(argv + 1, argv + argc));
 }

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "roles.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +46,7 @@ struct Options {
     std::string display;             ///< --display (empty: config default)
     std::string view;                ///< --view (empty: display default)
     int threads = 0;
+    uint64_t memory_limit_mb = 0;    ///< --memory-limit (0: physical memory)
     bool verbose = false;
     bool runstats = false;
     bool force = false;

@@ -2,6 +2,7 @@
 // spec, and atomic (temp file + rename) writes.
 #include "output.h"
 
+#include "cleanup.h"
 #include "error.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -46,8 +47,10 @@ const float* float_pixels(const ImageBuf& image, std::vector<float>& storage)
 
 OutputBatch::~OutputBatch()
 {
-    for (const auto& [temp, final_path] : pending_)
-        std::remove(temp.c_str());
+    for (const Pending& pending : pending_) {
+        std::remove(pending.temp.c_str());
+        untrack_temp_file(pending.slot);
+    }
 }
 
 void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
@@ -66,7 +69,7 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
         file_spec.channelformats.clear();
     if (!out->supports("tiles"))
         file_spec.tile_width = file_spec.tile_height = file_spec.tile_depth = 0;
-    pending_.emplace_back(temp, path);  // from here on the destructor removes it
+    pending_.push_back(Pending{ temp, path, track_temp_file(temp) });  // from here on it is removed on failure
     if (!out->open(temp, file_spec))
         throw fail(out->geterror());
     std::vector<float> storage;
@@ -80,11 +83,12 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
 void OutputBatch::commit()
 {
     while (!pending_.empty()) {
-        auto [temp, final_path] = pending_.front();
+        const Pending& pending = pending_.front();
         std::error_code error;
-        std::filesystem::rename(temp, final_path, error);
+        std::filesystem::rename(pending.temp, pending.final_path, error);
         if (error)
-            throw RunError(format("-o : cannot write '{}': {}", final_path, error.message()));
+            throw RunError(format("-o : cannot write '{}': {}", pending.final_path, error.message()));
+        untrack_temp_file(pending.slot);
         pending_.erase(pending_.begin());
     }
 }

@@ -3,7 +3,8 @@
 // in the input's pixel types and compression unless -d / --compression say
 // otherwise. Every file of a frame is written to a temp file in its own
 // directory and renamed into place only when the whole frame succeeded, so
-// a failure leaves no output behind.
+// a failure leaves no output behind; an interrupted run removes its temp
+// files (cleanup.h).
 #pragma once
 
 #include "options.h"
@@ -12,7 +13,6 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace mcdtool {
@@ -38,8 +38,13 @@ public:
     void commit();
 
 private:
+    /// A temp file written and not yet renamed.
+    struct Pending {
+        std::string temp, final_path;
+        int slot;  ///< in the interrupt cleanup table
+    };
     RunStats& stats_;
-    std::vector<std::pair<std::string, std::string>> pending_;  ///< (temp, final)
+    std::vector<Pending> pending_;
 };
 
 /// What one -o writes: the file spec and its float pixels.
