@@ -12,7 +12,8 @@
 ///   it (float pixels, covering `roi`) if it is uninitialized;
 ///   `ImageBuf op(const ImageBuf& beauty, <guides>, <params>, ROI roi = {},
 ///   int nthreads = 0)` returns a new image. Guides come in the order
-///   `object_id, reflect_id, normal, depth, albedo, variance`.
+///   `object_id, reflect_id, normal, depth, albedo, variance`; the
+///   feature-guided filters take them together as `Guides` (features.h).
 /// - **Errors.** The bool form returns false and sets `dst.errorfmt(...)`,
 ///   leaving `dst` untouched; the value form returns an image whose
 ///   `has_error()` is true. Nothing throws and nothing prints.
@@ -28,8 +29,13 @@
 ///   Results are bit-identical for any thread count and any ROI split.
 /// - **In place.** `dst` may be the same image as `beauty`.
 
+#include <mcdenoise/atrous.h>
 #include <mcdenoise/brdf.h>
+#include <mcdenoise/cross_bilateral.h>
+#include <mcdenoise/demodulate.h>
 #include <mcdenoise/dof.h>
+#include <mcdenoise/features.h>
+#include <mcdenoise/nlmeans.h>
 #include <mcdenoise/normal.h>
 #include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>

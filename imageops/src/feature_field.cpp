@@ -1,0 +1,267 @@
+// feature_field.cpp: guide checks, the feature weight's planes, the colour
+// and luminance of a pixel, and the per-pixel variance, for the
+// feature-guided filters.
+#include "feature_field.h"
+
+#include "window.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// features.h's depth rule: the log of a finite depth in (0, 1e9), else of
+// 1e9 ("infinitely far"). `load_depths` has already mapped far depths to
+// +inf.
+float log_depth(float d)
+{
+    static const double far = std::log(double(infinitely_far));
+    return float(std::isfinite(d) && d > 0.0f ? std::log(double(d)) : far);
+}
+
+// The factor that turns a feature into a plane whose squared differences
+// are the exponent's term |f_p - f_q|^2 / (2 sigma^2).
+float feature_scale(float sigma)
+{
+    return float(1.0 / (double(sigma) * std::sqrt(2.0)));
+}
+
+// An uninitialised-free plane of `region`'s pixel count.
+std::vector<float> plane_of(const ROI& region)
+{
+    return std::vector<float>(size_t(region.width()) * region.height());
+}
+
+// The region's pixels, row by row, with offsets into a plane of its width.
+template<class Fn>
+void for_each_pixel(const ROI& region, int nthreads, Fn&& fn)
+{
+    parallel_rows(region, nthreads, [&](int y) {
+        size_t i = size_t(y - region.ybegin) * region.width();
+        for (int x = region.xbegin; x < region.xend; ++x, ++i)
+            fn(x, y, i);
+    });
+}
+
+// Sample variance (divided by n - 1, 0 for n == 1) of `plane` over the
+// 3x3 window around each pixel of `region`, clipped to `bounds`; `plane`
+// covers `src` (which holds every such window).
+void estimate_variance(const float* plane, const ROI& src, const ROI& region,
+                       const ROI& bounds, int nthreads, float* out)
+{
+    const int w = src.width();
+    for_each_pixel(region, nthreads, [&](int x, int y, size_t i) {
+        const Span xs = clip_window(x, 1, bounds.xbegin, bounds.xend);
+        const Span ys = clip_window(y, 1, bounds.ybegin, bounds.yend);
+        const int n   = xs.size() * ys.size();
+        double sum    = 0.0;
+        for (int qy = ys.begin; qy < ys.end; ++qy)
+            for (int qx = xs.begin; qx < xs.end; ++qx)
+                sum += plane[size_t(qy - src.ybegin) * w + size_t(qx - src.xbegin)];
+        const double mean = sum / n;
+        double sq         = 0.0;
+        for (int qy = ys.begin; qy < ys.end; ++qy)
+            for (int qx = xs.begin; qx < xs.end; ++qx) {
+                const double d = plane[size_t(qy - src.ybegin) * w + size_t(qx - src.xbegin)]
+                                 - mean;
+                sq += d * d;
+            }
+        out[i] = n > 1 ? float(sq / (n - 1)) : 0.0f;
+    });
+}
+
+}  // namespace
+
+bool check_colour_guide(const char* op, const char* name, ImageBuf& dst, const ImageBuf& guide,
+                        const ROI& roi)
+{
+    const int nc = guide.initialized() ? guide.nchannels() : feature_colour_channels;
+    if (nc != 1 && nc != feature_colour_channels) {
+        dst.errorfmt("{}: {} has {} channels, expected 3 or 1", op, name, nc);
+        return false;
+    }
+    return check_guide(op, name, dst, guide, nc, roi);
+}
+
+bool check_feature_guides(const char* op, ImageBuf& dst, const Guides& guides, const ROI& roi)
+{
+    return (!guides.object_id || check_guide(op, "object_id", dst, *guides.object_id, 1, roi))
+           && (!guides.normal || check_guide(op, "normal", dst, *guides.normal, 3, roi))
+           && (!guides.depth || check_guide(op, "depth", dst, *guides.depth, 1, roi))
+           && (!guides.albedo || check_colour_guide(op, "albedo", dst, *guides.albedo, roi))
+           && (!guides.variance
+               || check_colour_guide(op, "variance", dst, *guides.variance, roi));
+}
+
+bool load_guide_channels(const char* op, ImageBuf& dst, const ImageBuf& guide,
+                         const ROI& region, int nthreads, GuideChannels& out)
+{
+    const ROI dw = guide.roi();
+    ROI inside   = OIIO::roi_intersection(region, dw);
+    inside.chbegin = 0;
+    inside.chend   = guide.nchannels();
+    out.region     = region;
+    out.planes.assign(size_t(guide.nchannels()), plane_of(region));
+    if (!inside.defined() || inside.npixels() == 0)
+        return true;
+    PixelBlock block;
+    if (!load_block(guide, inside, block)) {
+        dst.errorfmt("{}: could not read a guide: {}", op, guide.geterror());
+        return false;
+    }
+    const int nc = block.nchannels;
+    parallel_rows(inside, nthreads, [&](int y) {
+        const float* in = block.row(y);
+        const size_t at = size_t(y - region.ybegin) * region.width()
+                          + size_t(inside.xbegin - region.xbegin);
+        for (int i = 0; i < inside.width(); ++i, in += nc)
+            for (int c = 0; c < nc; ++c)
+                out.planes[size_t(c)][at + i] = std::isfinite(in[c]) ? in[c] : 0.0f;
+    });
+    return true;
+}
+
+void FeatureField::add_exponent_row(int y, int x0, int n, int dx, int dy, float* e) const
+{
+    const size_t w  = size_t(region.width());
+    const size_t pc = size_t(y - region.ybegin) * w + size_t(x0 - region.xbegin);
+    const size_t pq = size_t(y + dy - region.ybegin) * w + size_t(x0 + dx - region.xbegin);
+    for (const std::vector<float>& dim : dims) {
+        const float* a = dim.data() + pc;
+        const float* b = dim.data() + pq;
+        for (int i = 0; i < n; ++i) {
+            const float t = a[i] - b[i];
+            e[i] += t * t;
+        }
+    }
+}
+
+void FeatureField::mask_row(int y, int x0, int n, int dx, int dy, float* w) const
+{
+    if (!has_ids)
+        return;
+    const int64_t* a = &ids.at(x0, y);
+    const int64_t* b = &ids.at(x0 + dx, y + dy);
+    for (int i = 0; i < n; ++i)
+        w[i] = a[i] == b[i] ? w[i] : 0.0f;
+}
+
+bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
+                        const FeatureSigmas& sigmas, const ROI& region, int nthreads,
+                        FeatureField& field)
+{
+    field.region = region;
+    field.dims.clear();
+    field.has_ids = guides.object_id != nullptr;
+    if (field.has_ids && !load_object_ids(op, dst, *guides.object_id, region, nthreads, field.ids))
+        return false;
+    if (guides.albedo && sigmas.albedo > 0.0f) {
+        GuideChannels albedo;
+        if (!load_guide_channels(op, dst, *guides.albedo, region, nthreads, albedo))
+            return false;
+        const float s = feature_scale(sigmas.albedo);
+        for (std::vector<float>& plane : albedo.planes) {
+            for (float& v : plane)
+                v *= s;
+            field.dims.push_back(std::move(plane));
+        }
+    }
+    if (guides.normal && sigmas.normal > 0.0f) {
+        GuidePlane<UnitNormal> normals;
+        if (!load_normals(op, dst, *guides.normal, region, nthreads, normals))
+            return false;
+        const float s = feature_scale(sigmas.normal);
+        std::vector<float> nx = plane_of(region), ny = plane_of(region), nz = plane_of(region);
+        for (size_t i = 0; i < normals.values.size(); ++i) {
+            nx[i] = normals.values[i].x * s;
+            ny[i] = normals.values[i].y * s;
+            nz[i] = normals.values[i].z * s;
+        }
+        field.dims.push_back(std::move(nx));
+        field.dims.push_back(std::move(ny));
+        field.dims.push_back(std::move(nz));
+    }
+    if (guides.depth && sigmas.depth > 0.0f) {
+        GuidePlane<float> depths;
+        if (!load_depths(op, dst, *guides.depth, region, nthreads, depths))
+            return false;
+        const float s = feature_scale(sigmas.depth);
+        std::vector<float> z = plane_of(region);
+        for_each_pixel(region, nthreads, [&](int, int, size_t i) {
+            z[i] = log_depth(depths.values[i]) * s;
+        });
+        field.dims.push_back(std::move(z));
+    }
+    return true;
+}
+
+std::array<float, feature_colour_channels> luminance_weights(int nc)
+{
+    if (nc == feature_colour_channels)
+        return { 0.2126f, 0.7152f, 0.0722f };  // Rec. 709 luma
+    std::array<float, feature_colour_channels> mean {};
+    for (int c = 0; c < nc; ++c)
+        mean[size_t(c)] = 1.0f / float(nc);
+    return mean;
+}
+
+ColourField colour_field(const PixelBlock& block, const ROI& region, int nthreads)
+{
+    ColourField field;
+    field.region   = region;
+    const int nc   = colour_channels(block.nchannels);
+    const auto lw  = luminance_weights(nc);
+    field.colour.assign(size_t(nc), plane_of(region));
+    field.luminance = plane_of(region);
+    for_each_pixel(region, nthreads, [&](int x, int y, size_t i) {
+        const float* v = block.pixel(x, y);
+        float lum      = 0.0f;
+        for (int c = 0; c < nc; ++c) {
+            const float u = std::isfinite(v[c]) ? v[c] : 0.0f;
+            field.colour[size_t(c)][i] = u;
+            lum += lw[size_t(c)] * u;
+        }
+        field.luminance[i] = lum;
+    });
+    return field;
+}
+
+bool load_variance(const char* op, ImageBuf& dst, const ImageBuf* variance,
+                   const ColourField& colour, const ROI& region, const ROI& data_window,
+                   int nthreads, VarianceField& out)
+{
+    const int nc  = colour.nchannels();
+    const auto lw = luminance_weights(nc);
+    out.region    = region;
+    out.colour.assign(size_t(nc), plane_of(region));
+    out.luminance = plane_of(region);
+    if (!variance) {
+        for (int c = 0; c < nc; ++c)
+            estimate_variance(colour.colour[size_t(c)].data(), colour.region, region,
+                              data_window, nthreads, out.colour[size_t(c)].data());
+        estimate_variance(colour.luminance.data(), colour.region, region, data_window,
+                          nthreads, out.luminance.data());
+        return true;
+    }
+    GuideChannels given;
+    if (!load_guide_channels(op, dst, *variance, region, nthreads, given))
+        return false;
+    for_each_pixel(region, nthreads, [&](int, int, size_t i) {
+        float lum = 0.0f;
+        for (int c = 0; c < nc; ++c) {
+            const int k   = std::min(c, given.nchannels() - 1);
+            const float v = std::max(0.0f, given.planes[size_t(k)][i]);
+            out.colour[size_t(c)][i] = v;
+            lum += lw[size_t(c)] * lw[size_t(c)] * v;
+        }
+        out.luminance[i] = lum;
+    });
+    return true;
+}
+
+}  // namespace mcdenoise

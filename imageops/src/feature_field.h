@@ -1,0 +1,114 @@
+// feature_field.h: what the feature-guided filters (cross_bilateral, atrous,
+// nlmeans) share: checking their guides, the feature weight of
+// features.h as scaled feature planes and an id plane, the colour and
+// luminance of a pixel as the weights see it, and the per-pixel variance.
+#pragma once
+
+#include <mcdenoise/features.h>
+
+#include "guides.h"
+#include "pixel_block.h"
+
+#include <array>
+#include <vector>
+
+namespace mcdenoise {
+
+/// Check that `guide` (named `name`) is readable, has three channels or one,
+/// and covers `roi`; else set `dst`'s error prefixed with `op`, return false.
+bool check_colour_guide(const char* op, const char* name, OIIO::ImageBuf& dst,
+                        const OIIO::ImageBuf& guide, const OIIO::ROI& roi);
+
+/// Check every guide in `guides` a feature-guided filter reads (all but the
+/// halves) against `roi`.
+bool check_feature_guides(const char* op, OIIO::ImageBuf& dst, const Guides& guides,
+                          const OIIO::ROI& roi);
+
+/// Channel planes of a guide over `region`, row-major, width
+/// `region.width()`: non-finite values and pixels outside the guide's data
+/// window as 0.
+struct GuideChannels {
+    OIIO::ROI region;
+    std::vector<std::vector<float>> planes;
+
+    int nchannels() const { return int(planes.size()); }
+    /// The values of channel `c` in row `y`, from `region.xbegin`.
+    const float* row(int c, int y) const
+    {
+        return planes[size_t(c)].data() + size_t(y - region.ybegin) * region.width();
+    }
+};
+
+/// Read every channel of `guide` over `region` as `GuideChannels`.
+bool load_guide_channels(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& guide,
+                         const OIIO::ROI& region, int nthreads, GuideChannels& out);
+
+/// The feature weight of features.h over a region: each present feature
+/// dimension as a plane of values scaled so that the exponent
+/// `(A + N + Z) / 2` is the squared distance of the feature vectors, plus
+/// the object ids when given.
+struct FeatureField {
+    OIIO::ROI region;
+    std::vector<std::vector<float>> dims;
+    bool has_ids = false;
+    IdPlane ids;
+
+    /// Add to `e[i]` the feature exponent `(A + N + Z) / 2` of center
+    /// (x0 + i, y) and neighbour (x0 + i + dx, y + dy), for i < n. Both
+    /// pixels must lie in `region`.
+    void add_exponent_row(int y, int x0, int n, int dx, int dy, float* e) const;
+
+    /// Set `w[i]` to 0 where center (x0 + i, y) and neighbour
+    /// (x0 + i + dx, y + dy) have different object ids.
+    void mask_row(int y, int x0, int n, int dx, int dy, float* w) const;
+};
+
+/// Read the features of `guides` (checked with `check_feature_guides`) over
+/// `region`, scaled by `sigmas`.
+bool load_feature_field(const char* op, OIIO::ImageBuf& dst, const Guides& guides,
+                        const FeatureSigmas& sigmas, const OIIO::ROI& region, int nthreads,
+                        FeatureField& field);
+
+/// The colour of features.h (the first three channels, non-finite as 0)
+/// and its luminance over a region, as planes of width `region.width()`.
+struct ColourField {
+    OIIO::ROI region;
+    std::vector<std::vector<float>> colour;
+    std::vector<float> luminance;
+
+    int nchannels() const { return int(colour.size()); }
+    size_t offset(int x, int y) const
+    {
+        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
+    }
+};
+
+/// The luminance weights of features.h for `nc` colour channels.
+std::array<float, feature_colour_channels> luminance_weights(int nc);
+
+/// The colour count of a beauty with `nchannels` channels.
+inline int colour_channels(int nchannels)
+{
+    return nchannels < feature_colour_channels ? nchannels : feature_colour_channels;
+}
+
+/// The colour field of `block` (whose channels start at 0) over `region`
+/// (inside the block).
+ColourField colour_field(const PixelBlock& block, const OIIO::ROI& region, int nthreads);
+
+/// Per-pixel variance of the colour channels and of the luminance, as
+/// planes of width `region.width()`.
+struct VarianceField {
+    OIIO::ROI region;
+    std::vector<std::vector<float>> colour;
+    std::vector<float> luminance;
+};
+
+/// The variance of features.h over `region`: from `variance` when given
+/// (checked with `check_feature_guides`), else estimated from `colour`,
+/// which must cover `region` grown by one pixel (clipped to `data_window`).
+bool load_variance(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf* variance,
+                   const ColourField& colour, const OIIO::ROI& region,
+                   const OIIO::ROI& data_window, int nthreads, VarianceField& out);
+
+}  // namespace mcdenoise
