@@ -95,8 +95,9 @@ bool begin_result(const char* op, ImageBuf& dst, const ImageBuf& beauty,
     result.roi = roi;
     bool shared = false;
     for (const ImageBuf* in : inputs)
-        shared |= in == &dst
-                  || (in->localpixels() && in->localpixels() == dst.localpixels());
+        shared |= in
+                  && (in == &dst
+                      || (in->localpixels() && in->localpixels() == dst.localpixels()));
     const bool direct = !shared && dst.localpixels()
                         && dst.spec().format == OIIO::TypeDesc::FLOAT
                         && roi.chend <= dst.nchannels();

@@ -60,7 +60,8 @@ bool check_window_op(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& 
 /// Allocate `dst` if needed (float pixels covering `roi`, like `beauty`
 /// otherwise) and point `result` at where the pixels go. Call only once
 /// every input has been checked and read: from here on `dst` changes.
-/// `inputs` are every image the operation reads (to detect in-place use).
+/// `inputs` are every image the operation reads (to detect in-place use);
+/// null entries (absent optional guides) are skipped.
 bool begin_result(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
                   std::initializer_list<const OIIO::ImageBuf*> inputs,
                   const OIIO::ROI& roi, ResultPixels& result);

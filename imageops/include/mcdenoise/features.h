@@ -39,6 +39,11 @@ struct Guides {
 /// >= 1e9 and <= 0, which is how Cycles and Tungsten mark escaped rays);
 /// `wf = 0` when an object id is given and the rounded ids differ (SPEC's
 /// object rule: a hard edge).
+///
+/// Every filter multiplies its weight factors as one exponential
+/// `exp(-(sum of exponents))`, computed in float with a fast exp (relative
+/// error below 2e-5); a total exponent of 87 or more (past float's
+/// smallest normal number) gives weight 0.
 struct FeatureSigmas {
     float albedo = 0.1f;  ///< albedo difference scale
     float normal = 0.3f;  ///< unit-normal difference scale

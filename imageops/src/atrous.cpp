@@ -1,0 +1,227 @@
+// atrous.cpp: the edge-avoiding a-trous wavelet filter (Dammertz et al.
+// 2010) with SVGF's variance-guided luminance weight (Schied et al. 2017).
+#include <mcdenoise/atrous.h>
+
+#include "feature_field.h"
+#include "operation.h"
+#include "weighted_sums.h"
+#include "window.h"
+
+#include <cmath>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// The B3-spline taps of Dammertz et al. (2010), offsets -2..2.
+constexpr int tap_radius        = 2;
+constexpr float b3_spline[5]    = { 1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16 };
+// SVGF's guard against a zero variance (Schied et al. 2017, eq. 3).
+constexpr float luminance_guard = 1e-10f;
+
+// One iterate over `region`: every channel (finite after the first), its
+// luminance and the luminance variance, as planes of the region's width.
+struct Iterate {
+    SumSource values;
+    std::vector<float> luminance;
+    std::vector<float> variance;
+};
+
+// Remaining reach of the taps before iteration i of n: sum of 2 * 2^j, j >= i.
+int reach_before(int i, int n)
+{
+    return (2 << n) - (2 << i);
+}
+
+// A plane over `to` cut from a plane over `from` (which contains it).
+std::vector<float> cut_plane(const std::vector<float>& plane, const ROI& from, const ROI& to)
+{
+    std::vector<float> out(size_t(to.width()) * to.height());
+    for (int y = to.ybegin; y < to.yend; ++y)
+        std::copy_n(plane.data() + size_t(y - from.ybegin) * from.width()
+                        + size_t(to.xbegin - from.xbegin),
+                    to.width(), out.data() + size_t(y - to.ybegin) * to.width());
+    return out;
+}
+
+// 1 / (sigma_luminance sqrt(g) + guard) over `out_region`, g the 3x3
+// binomial blur of `cur.variance` clipped to `dw` and renormalised; 0
+// everywhere when the luminance weight is off.
+std::vector<float> luminance_scale(const Iterate& cur, float sigma_luminance,
+                                   const ROI& out_region, const ROI& dw, int nthreads)
+{
+    static constexpr float binomial3[3] = { 1.0f, 2.0f, 1.0f };
+    std::vector<float> inv(size_t(out_region.width()) * out_region.height(), 0.0f);
+    if (!(sigma_luminance > 0.0f))
+        return inv;
+    parallel_rows(out_region, nthreads, [&](int y) {
+        const Span ys = clip_window(y, 1, dw.ybegin, dw.yend);
+        float* out    = inv.data() + size_t(y - out_region.ybegin) * out_region.width();
+        for (int x = out_region.xbegin; x < out_region.xend; ++x) {
+            const Span xs = clip_window(x, 1, dw.xbegin, dw.xend);
+            float sum = 0.0f, weight = 0.0f;
+            for (int qy = ys.begin; qy < ys.end; ++qy)
+                for (int qx = xs.begin; qx < xs.end; ++qx) {
+                    const float k = binomial3[qy - y + 1] * binomial3[qx - x + 1];
+                    sum += k * cur.variance[cur.values.offset(qx, qy)];
+                    weight += k;
+                }
+            out[x - out_region.xbegin]
+                = 1.0f / (sigma_luminance * std::sqrt(sum / weight) + luminance_guard);
+        }
+    });
+    return inv;
+}
+
+// The luminance of the colour channels of `values` at each pixel of its region.
+std::vector<float> luminance_of(const SumSource& values, int ncolour, int nthreads)
+{
+    const auto lw = luminance_weights(ncolour);
+    const ROI& reg = values.region;
+    std::vector<float> lum(size_t(reg.width()) * reg.height());
+    parallel_rows(reg, nthreads, [&](int y) {
+        const size_t at = values.offset(reg.xbegin, y);
+        for (int i = 0; i < reg.width(); ++i) {
+            float l = 0.0f;
+            for (int c = 0; c < ncolour; ++c)
+                l += lw[size_t(c)] * values.value[size_t(c)][at + i];
+            lum[at + i] = l;
+        }
+    });
+    return lum;
+}
+
+// One a-trous pass with step `step` from `cur` over `out_region`. On the
+// last pass, writes channels [roi.chbegin, roi.chend) into `result`
+// instead of making the next iterate.
+Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
+                    float sigma_luminance, int ncolour, const ROI& out_region, const ROI& dw,
+                    ResultPixels* result, int nthreads)
+{
+    const std::vector<float> inv
+        = luminance_scale(cur, sigma_luminance, out_region, dw, nthreads);
+    const SumSource& src = cur.values;
+    const int n = out_region.width(), x0 = out_region.xbegin;
+    Iterate next;
+    const int nch = src.nchannels();
+    if (!result) {
+        next.values.region = out_region;
+        next.values.value.assign(size_t(nch), std::vector<float>(size_t(n) * out_region.height()));
+        next.variance.resize(size_t(n) * out_region.height());
+    }
+    parallel_rows(out_region, nthreads, [&](int y) {
+        const int c0 = result ? result->roi.chbegin : 0;
+        const int c1 = result ? result->roi.chend : nch;
+        WeightedSums sums(c0, c1, n, src.masked());
+        const size_t len = static_cast<size_t>(n);
+        std::vector<float> e(len), w(len), wsum(len, 0.0f), w2var(len, 0.0f);
+        const float* lum_p = cur.luminance.data() + src.offset(x0, y);
+        const float* inv_p = inv.data() + size_t(y - out_region.ybegin) * n;
+        for (int ky = -tap_radius; ky <= tap_radius; ++ky) {
+            const int dy = ky * step;
+            if (y + dy < dw.ybegin || y + dy >= dw.yend)
+                continue;
+            for (int kx = -tap_radius; kx <= tap_radius; ++kx) {
+                const int dx = kx * step;
+                const int i0 = std::max(0, dw.xbegin - dx - x0);
+                const int i1 = std::min(n, dw.xend - dx - x0);
+                if (i0 >= i1)
+                    continue;
+                const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
+                const size_t q = src.offset(x0 + dx, y + dy);
+                const float* lum_q = cur.luminance.data() + q;
+                const float* var_q = cur.variance.data() + q;
+                if (dx == 0 && dy == 0) {
+                    std::fill(w.begin() + i0, w.begin() + i1, h);
+                } else {
+                    std::fill(e.begin() + i0, e.begin() + i1, 0.0f);
+                    features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
+                    for (int i = i0; i < i1; ++i)
+                        e[i] += std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
+                    weights_from_exponents(e.data() + i0, h, i1 - i0, w.data() + i0);
+                    features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                }
+                for (int i = i0; i < i1; ++i) {
+                    wsum[i] += w[i];
+                    w2var[i] += w[i] * w[i] * var_q[i];
+                }
+                sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
+            }
+        }
+        if (result) {
+            result->empty_windows += sums.write(result->pixel(x0, y), result->pixel_stride());
+            return;
+        }
+        const size_t at = next.values.offset(x0, y);
+        std::vector<float*> planes(static_cast<size_t>(nch));
+        for (int c = 0; c < nch; ++c)
+            planes[size_t(c)] = next.values.value[size_t(c)].data() + at;
+        sums.write_planes(planes.data());
+        for (int i = 0; i < n; ++i)
+            next.variance[at + i] = w2var[i] / (wsum[i] * wsum[i]);
+    });
+    if (!result)
+        next.luminance = luminance_of(next.values, ncolour, nthreads);
+    return next;
+}
+
+}  // namespace
+
+bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int iterations,
+            float sigma_luminance, const FeatureSigmas& sigmas, ROI roi, int nthreads)
+{
+    const char* op = "atrous";
+    if (iterations < 1 || iterations > max_atrous_iterations) {
+        dst.errorfmt("{}: iterations must be between 1 and {}, got {}", op,
+                     max_atrous_iterations, iterations);
+        return false;
+    }
+    if (!resolve_roi(op, dst, beauty, roi) || !check_feature_guides(op, dst, guides, roi))
+        return false;
+    const ROI dw   = beauty.roi();
+    ROI first      = grow_and_clip(roi, reach_before(0, iterations), dw);
+    first.chbegin  = 0;
+    first.chend    = beauty.nchannels();
+    ROI read       = grow_and_clip(first, 1, dw);  // the variance estimate's windows
+    PixelBlock block;
+    FeatureField features;
+    VarianceField variance;
+    if (!read_beauty(op, dst, beauty, read, block)
+        || !load_feature_field(op, dst, guides, sigmas, first, nthreads, features))
+        return false;
+    const ColourField colour = colour_field(block, read, nthreads);
+    if (!load_variance(op, dst, guides.variance, colour, first, dw, nthreads, variance))
+        return false;
+    Iterate cur;
+    cur.values    = sum_source(block, 0, beauty.nchannels(), first, nthreads);
+    cur.luminance = cut_plane(colour.luminance, read, first);
+    cur.variance  = std::move(variance.luminance);
+    block         = {};
+    ResultPixels result;
+    if (!begin_result(op, dst, beauty,
+                      { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
+                        guides.variance },
+                      roi, result))
+        return false;
+    const int ncolour = colour.nchannels();
+    for (int i = 0; i < iterations; ++i) {
+        const bool last = i == iterations - 1;
+        const ROI out   = last ? roi : grow_and_clip(roi, reach_before(i + 1, iterations), dw);
+        cur = atrous_pass(cur, features, 1 << i, sigma_luminance, ncolour, out, dw,
+                          last ? &result : nullptr, nthreads);
+    }
+    return finish_result(op, dst, result);
+}
+
+ImageBuf atrous(const ImageBuf& beauty, const Guides& guides, int iterations,
+                float sigma_luminance, const FeatureSigmas& sigmas, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return atrous(dst, beauty, guides, iterations, sigma_luminance, sigmas, roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise

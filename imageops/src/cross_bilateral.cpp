@@ -1,0 +1,116 @@
+// cross_bilateral.cpp: the joint (cross) bilateral filter: spatial, feature
+// and optional colour weights, one window offset at a time over contiguous
+// rows.
+#include <mcdenoise/cross_bilateral.h>
+
+#include "feature_field.h"
+#include "operation.h"
+#include "weighted_sums.h"
+#include "window.h"
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// Add the colour exponent |c_p - c_q|^2 * scale of center (x0 + i, y) and
+// neighbour (x0 + i + dx, y + dy) to e[i], for i < n.
+void add_colour_exponent(const ColourField& colour, float scale, int y, int x0, int n, int dx,
+                         int dy, float* e)
+{
+    const size_t pc = colour.offset(x0, y), pq = colour.offset(x0 + dx, y + dy);
+    for (const std::vector<float>& plane : colour.colour) {
+        const float* a = plane.data() + pc;
+        const float* b = plane.data() + pq;
+        for (int i = 0; i < n; ++i) {
+            const float t = a[i] - b[i];
+            e[i] += scale * (t * t);
+        }
+    }
+}
+
+}  // namespace
+
+bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int size,
+                     float sigma_spatial, float sigma_color, const FeatureSigmas& sigmas,
+                     ROI roi, int nthreads)
+{
+    const char* op = "cross_bilateral";
+    if (!check_window_op(op, dst, beauty, size, roi))
+        return false;
+    if (!(sigma_spatial > 0.0f)) {
+        dst.errorfmt("{}: sigma_spatial must be > 0, got {}", op, sigma_spatial);
+        return false;
+    }
+    if (!check_feature_guides(op, dst, guides, roi))
+        return false;
+    const int r         = size / 2;
+    const ROI dw        = beauty.roi();
+    ROI region          = grow_and_clip(roi, r, dw);
+    region.chbegin      = 0;
+    region.chend        = beauty.nchannels();
+    const bool by_color = sigma_color > 0.0f;
+    PixelBlock block;
+    FeatureField features;
+    if (!read_beauty(op, dst, beauty, region, block)
+        || !load_feature_field(op, dst, guides, sigmas, region, nthreads, features))
+        return false;
+    const ColourField colour = by_color ? colour_field(block, region, nthreads) : ColourField {};
+    const SumSource src = sum_source(block, roi.chbegin, roi.chend, region, nthreads);
+    block = {};
+    ResultPixels result;
+    if (!begin_result(op, dst, beauty,
+                      { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo },
+                      roi, result))
+        return false;
+    const float spatial_scale = float(1.0 / (2.0 * double(sigma_spatial) * sigma_spatial));
+    const float colour_scale  = by_color ? float(1.0 / (2.0 * double(sigma_color) * sigma_color))
+                                         : 0.0f;
+    parallel_rows(roi, nthreads, [&](int y) {
+        const int n = roi.width(), x0 = roi.xbegin;
+        WeightedSums sums(0, src.nchannels(), n, src.masked());
+        const size_t len = static_cast<size_t>(n);
+        std::vector<float> e(len), w(len);
+        for (int dy = -r; dy <= r; ++dy) {
+            if (y + dy < dw.ybegin || y + dy >= dw.yend)
+                continue;
+            for (int dx = -r; dx <= r; ++dx) {
+                // Pixels i0 .. i1 have their neighbour inside the data window.
+                const int i0 = std::max(0, dw.xbegin - dx - x0);
+                const int i1 = std::min(n, dw.xend - dx - x0);
+                if (i0 >= i1)
+                    continue;
+                const int m = i1 - i0, xa = x0 + i0;
+                if (dx == 0 && dy == 0) {
+                    std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
+                } else {
+                    std::fill(e.begin() + i0, e.begin() + i1,
+                              spatial_scale * float(dx * dx + dy * dy));
+                    features.add_exponent_row(y, xa, m, dx, dy, e.data() + i0);
+                    if (by_color)
+                        add_colour_exponent(colour, colour_scale, y, xa, m, dx, dy,
+                                            e.data() + i0);
+                    weights_from_exponents(e.data() + i0, 1.0f, m, w.data() + i0);
+                    features.mask_row(y, xa, m, dx, dy, w.data() + i0);
+                }
+                sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
+            }
+        }
+        result.empty_windows += sums.write(result.pixel(x0, y), result.pixel_stride());
+    });
+    return finish_result(op, dst, result);
+}
+
+ImageBuf cross_bilateral(const ImageBuf& beauty, const Guides& guides, int size,
+                         float sigma_spatial, float sigma_color, const FeatureSigmas& sigmas,
+                         ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return cross_bilateral(dst, beauty, guides, size, sigma_spatial, sigma_color, sigmas,
+                               roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise

@@ -1,0 +1,199 @@
+// nlmeans.cpp: non-local means with variance-normalised patch distances
+// (Rousselle, Knaus & Zwicker 2012) and feature weights (Rousselle, Manzi &
+// Zwicker 2013). One search offset at a time, a chunk of rows at a time:
+// the per-pixel distance plane of that offset, its box sums over the patch
+// (rows, then columns, in a fixed order), the weights, the sums.
+#include <mcdenoise/nlmeans.h>
+
+#include "feature_field.h"
+#include "operation.h"
+#include "weighted_sums.h"
+#include "window.h"
+
+#include <OpenImageIO/imagebufalgo_util.h>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+// Rows filtered together: the distance planes of a chunk carry 2 f rows of
+// overlap, so the chunk is a few times taller than any patch.
+constexpr int chunk_rows = 16;
+// Guard of the distance's denominator (Rousselle et al. 2012, eq. 9).
+constexpr float distance_guard = 1e-10f;
+
+// What every chunk reads.
+struct NlmInputs {
+    const ColourField& colour;
+    const VarianceField& variance;
+    const FeatureField& features;
+    const SumSource& values;
+    ROI roi, dw;
+    int r, f;
+    float k2;  // strength^2
+};
+
+// Number of n in [-f, f] with both p + n and p + d + n in [lo, hi).
+inline int patch_count(int p, int d, int f, int lo, int hi)
+{
+    const int a = std::max(-f, std::max(lo - p, lo - p - d));
+    const int b = std::min(f, std::min(hi - 1 - p, hi - 1 - p - d));
+    return b - a + 1;
+}
+
+// Rows [y0, y1) of the ROI.
+void nlmeans_chunk(const NlmInputs& in, int y0, int y1, ResultPixels& result)
+{
+    const ROI& roi = in.roi;
+    const ROI& dw  = in.dw;
+    const int r = in.r, f = in.f, n = roi.width(), x0 = roi.xbegin;
+    const int pw = n + 2 * f;          // distance rows: x from x0 - f
+    const int ph = (y1 - y0) + 2 * f;  // rows from y0 - f
+    const int nc = in.colour.nchannels();
+    const float channel_mean = 1.0f / float(nc);
+    std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
+        e(static_cast<size_t>(n)), w(static_cast<size_t>(n));
+    std::vector<WeightedSums> sums;
+    for (int y = y0; y < y1; ++y)
+        sums.emplace_back(roi.chbegin, roi.chend, n, in.values.masked());
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            // Per-pixel distances d(x, x + o), 0 where either is outside.
+            std::fill(dist.begin(), dist.end(), 0.0f);
+            const int xa = std::max({ dw.xbegin, x0 - f, dw.xbegin - dx });
+            const int xb = std::min({ dw.xend, roi.xend + f, dw.xend - dx });
+            for (int yy = std::max(dw.ybegin, y0 - f); yy < std::min(dw.yend, y1 + f); ++yy) {
+                if (yy + dy < dw.ybegin || yy + dy >= dw.yend || xa >= xb)
+                    continue;
+                float* d = dist.data() + size_t(yy - (y0 - f)) * pw + (xa - (x0 - f));
+                const size_t up = in.colour.offset(xa, yy), uq = in.colour.offset(xa + dx, yy + dy);
+                const int m = xb - xa;
+                const int vw = in.variance.region.width();
+                const size_t sp = size_t(yy - in.variance.region.ybegin) * vw
+                                  + size_t(xa - in.variance.region.xbegin);
+                const size_t sq = size_t(yy + dy - in.variance.region.ybegin) * vw
+                                  + size_t(xa + dx - in.variance.region.xbegin);
+                for (int c = 0; c < nc; ++c) {
+                    const float* u_p = in.colour.colour[size_t(c)].data() + up;
+                    const float* u_q = in.colour.colour[size_t(c)].data() + uq;
+                    const float* v_p = in.variance.colour[size_t(c)].data() + sp;
+                    const float* v_q = in.variance.colour[size_t(c)].data() + sq;
+                    for (int i = 0; i < m; ++i) {
+                        const float t = u_p[i] - u_q[i];
+                        d[i] += (t * t - (v_p[i] + std::min(v_p[i], v_q[i])))
+                                / (distance_guard + in.k2 * (v_p[i] + v_q[i]));
+                    }
+                }
+                for (int i = 0; i < m; ++i)
+                    d[i] *= channel_mean;
+            }
+            for (int y = y0; y < y1; ++y) {
+                if (y + dy < dw.ybegin || y + dy >= dw.yend)
+                    continue;
+                const int i0 = std::max(0, dw.xbegin - dx - x0);
+                const int i1 = std::min(n, dw.xend - dx - x0);
+                if (i0 >= i1)
+                    continue;
+                WeightedSums& s = sums[size_t(y - y0)];
+                if (dx == 0 && dy == 0) {
+                    std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
+                    s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
+                    continue;
+                }
+                // Patch sums: down the rows, then along the columns.
+                std::fill(column.begin(), column.end(), 0.0f);
+                for (int t = 0; t <= 2 * f; ++t) {
+                    const float* d = dist.data() + size_t(y - y0 + t) * pw;
+                    for (int i = 0; i < pw; ++i)
+                        column[i] += d[i];
+                }
+                const int cy = patch_count(y, dy, f, dw.ybegin, dw.yend);
+                for (int i = i0; i < i1; ++i) {
+                    float sum = 0.0f;
+                    for (int t = 0; t <= 2 * f; ++t)
+                        sum += column[size_t(i + t)];
+                    const int px    = x0 + i;
+                    const int count = cy * patch_count(px, dx, f, dw.xbegin, dw.xend);
+                    e[i] = std::max(0.0f, sum / float(count));
+                }
+                in.features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
+                weights_from_exponents(e.data() + i0, 1.0f, i1 - i0, w.data() + i0);
+                in.features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
+            }
+        }
+    int64_t empty = 0;
+    for (int y = y0; y < y1; ++y)
+        empty += sums[size_t(y - y0)].write(result.pixel(x0, y), result.pixel_stride());
+    result.empty_windows += empty;
+}
+
+}  // namespace
+
+bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int search_radius,
+             int patch_radius, float strength, const FeatureSigmas& sigmas, ROI roi,
+             int nthreads)
+{
+    const char* op = "nlmeans";
+    if (search_radius < 0 || search_radius > max_nlmeans_search_radius) {
+        dst.errorfmt("{}: search_radius must be between 0 and {}, got {}", op,
+                     max_nlmeans_search_radius, search_radius);
+        return false;
+    }
+    if (patch_radius < 0 || patch_radius > max_nlmeans_patch_radius) {
+        dst.errorfmt("{}: patch_radius must be between 0 and {}, got {}", op,
+                     max_nlmeans_patch_radius, patch_radius);
+        return false;
+    }
+    if (!(strength > 0.0f)) {
+        dst.errorfmt("{}: strength must be > 0, got {}", op, strength);
+        return false;
+    }
+    if (!resolve_roi(op, dst, beauty, roi) || !check_feature_guides(op, dst, guides, roi))
+        return false;
+    const ROI dw      = beauty.roi();
+    const ROI search  = grow_and_clip(roi, search_radius, dw);
+    const ROI patches = grow_and_clip(roi, search_radius + patch_radius, dw);
+    ROI read          = grow_and_clip(patches, 1, dw);  // the variance estimate's windows
+    read.chbegin      = 0;
+    read.chend        = beauty.nchannels();
+    PixelBlock block;
+    FeatureField features;
+    VarianceField variance;
+    if (!read_beauty(op, dst, beauty, read, block)
+        || !load_feature_field(op, dst, guides, sigmas, search, nthreads, features))
+        return false;
+    const ColourField colour = colour_field(block, read, nthreads);
+    if (!load_variance(op, dst, guides.variance, colour, patches, dw, nthreads, variance))
+        return false;
+    const SumSource values = sum_source(block, 0, beauty.nchannels(), search, nthreads);
+    block = {};
+    ResultPixels result;
+    if (!begin_result(op, dst, beauty,
+                      { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
+                        guides.variance },
+                      roi, result))
+        return false;
+    const NlmInputs in { colour, variance, features, values, roi, dw,
+                         search_radius, patch_radius, strength * strength };
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+        for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
+            nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), result);
+    });
+    return finish_result(op, dst, result);
+}
+
+ImageBuf nlmeans(const ImageBuf& beauty, const Guides& guides, int search_radius,
+                 int patch_radius, float strength, const FeatureSigmas& sigmas, ROI roi,
+                 int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return nlmeans(dst, beauty, guides, search_radius, patch_radius, strength, sigmas,
+                       roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise

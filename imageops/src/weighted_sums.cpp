@@ -1,0 +1,107 @@
+// weighted_sums.cpp: masked weighted sums over pixel runs and weights from
+// exponents.
+#include "weighted_sums.h"
+
+#include "window.h"
+
+#include <OpenImageIO/fmath.h>
+
+#include <cmath>
+
+namespace mcdenoise {
+
+SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO::ROI& region,
+                     int nthreads)
+{
+    SumSource src;
+    src.region      = region;
+    const int nc    = chend - chbegin;
+    const size_t np = size_t(region.width()) * region.height();
+    src.value.assign(size_t(nc), std::vector<float>(np));
+    std::vector<std::vector<float>> finite(static_cast<size_t>(nc), std::vector<float>(np));
+    std::vector<uint8_t> row_has_nonfinite(size_t(region.height()));
+    parallel_rows(region, nthreads, [&](int y) {
+        const float* in = block.pixel(region.xbegin, y);
+        const size_t at = src.offset(region.xbegin, y);
+        bool any        = false;
+        for (int i = 0; i < region.width(); ++i, in += block.nchannels)
+            for (int c = 0; c < nc; ++c) {
+                const float v = in[chbegin + c];
+                const bool ok = std::isfinite(v);
+                src.value[size_t(c)][at + i] = ok ? v : 0.0f;
+                finite[size_t(c)][at + i]    = ok ? 1.0f : 0.0f;
+                any |= !ok;
+            }
+        row_has_nonfinite[size_t(y - region.ybegin)] = any;
+    });
+    for (uint8_t any : row_has_nonfinite)
+        if (any) {
+            src.finite = std::move(finite);
+            break;
+        }
+    return src;
+}
+
+WeightedSums::WeightedSums(int chbegin, int chend, int n, bool masked)
+    : m_c0(chbegin)
+    , m_nc(chend - chbegin)
+    , m_n(n)
+    , m_masked(masked)
+    , m_num(size_t(m_nc) * n, 0.0f)
+    , m_den(size_t(masked ? m_nc : 1) * n, 0.0f)
+{
+}
+
+void WeightedSums::add(const float* w, const SumSource& src, int qx0, int qy, int i0, int i1)
+{
+    const size_t at = src.offset(qx0, qy);
+    for (int c = 0; c < m_nc; ++c) {
+        const float* v = src.value[size_t(m_c0 + c)].data() + at;
+        float* num     = m_num.data() + size_t(c) * m_n;
+        for (int i = i0; i < i1; ++i)
+            num[i] += w[i] * v[i];
+        if (m_masked) {
+            const float* m = src.finite[size_t(m_c0 + c)].data() + at;
+            float* den     = m_den.data() + size_t(c) * m_n;
+            for (int i = i0; i < i1; ++i)
+                den[i] += w[i] * m[i];
+        }
+    }
+    if (!m_masked)
+        for (int i = i0; i < i1; ++i)
+            m_den[size_t(i)] += w[i];
+}
+
+template<class Store>
+int64_t WeightedSums::write_each(Store&& store) const
+{
+    int64_t empty = 0;
+    for (int c = 0; c < m_nc; ++c) {
+        const float* num = m_num.data() + size_t(c) * m_n;
+        const float* den = m_den.data() + (m_masked ? size_t(c) * m_n : 0);
+        for (int i = 0; i < m_n; ++i) {
+            const bool any = den[i] > 0.0f;
+            store(c, i, any ? num[i] / den[i] : 0.0f);
+            empty += !any;
+        }
+    }
+    return empty;
+}
+
+int64_t WeightedSums::write(float* out, std::ptrdiff_t stride) const
+{
+    return write_each([=](int c, int i, float v) { out[i * stride + c] = v; });
+}
+
+int64_t WeightedSums::write_planes(float* const* out) const
+{
+    return write_each([=](int c, int i, float v) { out[c][i] = v; });
+}
+
+void weights_from_exponents(const float* e, float scale, int n, float* w)
+{
+    for (int i = 0; i < n; ++i)
+        w[i] = e[i] < max_weight_exponent ? scale * OIIO::fast_exp(-e[i]) : 0.0f;
+}
+
+}  // namespace mcdenoise

@@ -1,0 +1,72 @@
+// weighted_sums.h: the accumulation every feature-guided filter ends with:
+// per channel, the sum of weight times finite value and of the weights that
+// contributed, over runs of pixels in contiguous float rows, and the
+// weights themselves from exponent rows.
+#pragma once
+
+#include "pixel_block.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace mcdenoise {
+
+/// The values the sums read, as channel planes of width `region.width()`:
+/// non-finite values as 0 and, when there are any, a plane per channel of
+/// 1 where finite and 0 where not.
+struct SumSource {
+    OIIO::ROI region;
+    std::vector<std::vector<float>> value;
+    std::vector<std::vector<float>> finite;  ///< empty when every value is finite
+
+    int nchannels() const { return int(value.size()); }
+    bool masked() const { return !finite.empty(); }
+    size_t offset(int x, int y) const
+    {
+        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
+    }
+};
+
+/// Channels [chbegin, chend) of `block` (whose channels start at 0) over
+/// `region` (inside the block) as a `SumSource`.
+SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO::ROI& region,
+                     int nthreads);
+
+/// Per-channel weighted sums for a run of `n` pixels, over channels
+/// [chbegin, chend) of the `SumSource`s they are given.
+class WeightedSums {
+public:
+    WeightedSums(int chbegin, int chend, int n, bool masked);
+
+    /// For each i in [i0, i1): add `w[i]` times the value of `src` at
+    /// (qx0 + i, qy) to pixel i's sums (finite values only).
+    void add(const float* w, const SumSource& src, int qx0, int qy, int i0, int i1);
+
+    /// Pixel i's channel chbegin + c: the weighted mean, or 0 when no weight
+    /// contributed. Returns the count of such empty channels over the run,
+    /// writing `out[i * stride + c]`.
+    int64_t write(float* out, std::ptrdiff_t stride) const;
+
+    /// The weighted means of channel c into `out[c][i]`; returns the count
+    /// of empty channels, as `write`.
+    int64_t write_planes(float* const* out) const;
+
+private:
+    // Calls store(c, i, mean) for every channel c and pixel i.
+    template<class Store>
+    int64_t write_each(Store&& store) const;
+
+    int m_c0, m_nc, m_n;
+    bool m_masked;
+    std::vector<float> m_num;  // channel-major, m_n per channel
+    std::vector<float> m_den;  // per channel when masked, else one run
+};
+
+/// Past this exponent a float exp underflows to denormals: the weight is 0.
+constexpr float max_weight_exponent = 87.0f;
+
+/// `w[i] = scale * exp(-e[i])` for i < n (0 past `max_weight_exponent`),
+/// with a vectorisable exp.
+void weights_from_exponents(const float* e, float scale, int n, float* w);
+
+}  // namespace mcdenoise
