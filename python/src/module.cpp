@@ -1,0 +1,73 @@
+// module.cpp: the compiled module mcdenoise._mcdenoise: the library's filters
+// and metrics, mcdtool's frame runner, and the exceptions they raise.
+#include "driver.h"
+#include "operation.h"
+#include "operations.h"
+
+#include "oiiotool-ext/error.h"
+
+#include <mcdenoise/metrics.h>
+
+#include <stdexcept>
+
+namespace mcdpy {
+
+namespace {
+
+/// What raise_library_error throws; becomes mcdenoise.Error.
+struct LibraryError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// The ImageComparison record of compare_images, fields as in C++.
+void bind_comparison(py::module_& m)
+{
+    using mcdenoise::ImageComparison;
+    py::class_<ImageComparison>(m, "ImageComparison", "Every metric of one comparison (see compare_images).")
+        .def_readonly("rel_mse", &ImageComparison::rel_mse)
+        .def_readonly("mse", &ImageComparison::mse)
+        .def_readonly("psnr", &ImageComparison::psnr)
+        .def_readonly("ssim", &ImageComparison::ssim)
+        .def_readonly("pixels", &ImageComparison::pixels)
+        .def_readonly("nonfinite", &ImageComparison::nonfinite)
+        .def_readonly("ok", &ImageComparison::ok)
+        .def_readonly("error", &ImageComparison::error)
+        .def("__repr__", [](const ImageComparison& c) {
+            return py::str("ImageComparison(rel_mse={}, mse={}, psnr={}, ssim={}, pixels={}, nonfinite={})")
+                .format(c.rel_mse, c.mse, c.psnr, c.ssim, c.pixels, c.nonfinite);
+        });
+}
+
+}  // namespace
+
+void raise_library_error(const std::string& message) { throw LibraryError(message); }
+
+}  // namespace mcdpy
+
+PYBIND11_MODULE(_mcdenoise, m)
+{
+    namespace py = pybind11;
+    // OpenImageIO registers ImageBuf and ROI in pybind11's shared registry;
+    // it must be imported before the first def that names them.
+    py::module_::import("OpenImageIO");
+    m.doc() = "libmcdenoise's filters and metrics, and mcdtool's frame runner.";
+
+    static py::exception<mcdpy::LibraryError> error(m, "Error", PyExc_RuntimeError);
+    static py::exception<mcdtool::UsageError> usage_error(m, "UsageError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr raised) {
+        try {
+            if (raised)
+                std::rethrow_exception(raised);
+        } catch (const mcdpy::LibraryError& e) {
+            error(e.what());
+        } catch (const mcdtool::RunError& e) {
+            error(e.what());
+        } catch (const mcdtool::UsageError& e) {
+            usage_error(e.what());
+        }
+    });
+
+    mcdpy::bind_comparison(m);
+    mcdpy::bind_operations(m);
+    mcdpy::bind_driver(m);
+}
