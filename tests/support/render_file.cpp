@@ -43,6 +43,9 @@ Render read_render(const std::string& path)
     r.normal     = channels_named(file, { "N.X", "N.Y", "N.Z" }, r.error);
     r.depth      = channels_named(file, { "Z" }, r.error);
     r.albedo     = channels_named(file, { "albedo.R", "albedo.G", "albedo.B" }, r.error);
+    r.variance   = channels_named(file, { "var.R", "var.G", "var.B" }, r.error);
+    r.half_a     = channels_named(file, { "A.R", "A.G", "A.B" }, r.error);
+    r.half_b     = channels_named(file, { "B.R", "B.G", "B.B" }, r.error);
     return r;
 }
 

@@ -3,6 +3,8 @@
 // the quality tests and the quality study.
 #pragma once
 
+#include <mcdenoise/features.h>
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <functional>
@@ -14,10 +16,18 @@ namespace testimg {
 /// The beauty and guides of one testrender file.
 struct Render {
     OIIO::ImageBuf beauty, object_id, reflect_id, normal, depth, albedo;
+    OIIO::ImageBuf variance, half_a, half_b;
     std::string error;  ///< set when the file could not be read
+
+    /// Every guide of this render, for the feature-guided filters.
+    mcdenoise::Guides guides() const
+    {
+        return { &object_id, &normal, &depth, &albedo, &variance, &half_a, &half_b };
+    }
 };
 
-/// Read `path` (testrender channel names: R,G,B, id, reflid, N.*, Z, albedo.*).
+/// Read `path` (testrender channel names: R,G,B, id, reflid, N.*, Z, albedo.*,
+/// var.*, A.*, B.*).
 Render read_render(const std::string& path);
 
 /// A filter of the report applied to a render: returns the filtered beauty.

@@ -33,8 +33,10 @@
 #include <mcdenoise/brdf.h>
 #include <mcdenoise/cross_bilateral.h>
 #include <mcdenoise/demodulate.h>
+#include <mcdenoise/denoise.h>
 #include <mcdenoise/dof.h>
 #include <mcdenoise/features.h>
+#include <mcdenoise/fireflies.h>
 #include <mcdenoise/nlmeans.h>
 #include <mcdenoise/normal.h>
 #include <mcdenoise/object.h>

@@ -1,0 +1,58 @@
+// denoise.h: the one-call denoiser: takes whatever guides are present and
+// chooses its parameters from the data.
+#pragma once
+
+#include <mcdenoise/features.h>
+
+namespace mcdenoise {
+
+/// Denoise a Monte Carlo render with every guide it is given: the
+/// project's best non-learned result in one call.
+///
+/// The steps, each a filter of this library:
+/// 1. `clamp_fireflies` (factor 2, radius 2, within objects when
+///    `object_id` is given): the few very bright samples that dominate the
+///    error are scaled down before anything is averaged.
+/// 2. `nlmeans` (search radius 7, patch radius 1) on the clamped beauty, with
+///    variance-normalised patch distances (Rousselle, Knaus & Zwicker 2012)
+///    and feature weights (Rousselle, Manzi & Zwicker 2013) with fall-offs
+///    `denoise_feature_sigmas`.
+///
+/// What each guide buys (docs/quality.md has the measurements):
+/// - `variance`: the noise level of every pixel, so the colour distance
+///   tells noise from detail. Without it the variance comes from the halves
+///   (a 3x3 mean of `(half_a - half_b)^2 / 4`) or, with neither, from the
+///   3x3 neighbourhood, which also counts detail as noise. The strength is
+///   chosen from which one is used: `denoise_measured_strength` for a
+///   measured variance, `denoise_estimated_strength` for an estimated one.
+/// - `normal`, `depth`, `albedo`: neighbours on other surfaces, at other
+///   distances or with another texture weigh less, so edges and texture
+///   stay where the colour alone cannot tell them from noise.
+/// - `object_id`: neighbours on other objects are left out entirely, and
+///   fireflies are judged against their own object.
+/// - `half_a`, `half_b`: only used for the variance when it is absent.
+/// Albedo is not divided out: the albedo buffer carries its own sampling
+/// noise (sub-pixel texture, defocus), which remodulation would put back
+/// (see docs/quality.md); `demodulate` / `remodulate` are there for chains
+/// with a clean albedo.
+///
+/// The `dst` attribute `mcdenoise:denoise_guides` lists the guides used.
+///
+/// @param beauty  The noisy render, any channel count (colour first).
+/// @param guides  Any subset; each present one must cover the ROI.
+ImageBuf denoise(const ImageBuf& beauty, const Guides& guides = {}, ROI roi = {},
+                 int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized).
+bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides = {}, ROI roi = {},
+             int nthreads = 0);
+
+/// The feature fall-offs `denoise` uses: wider than `FeatureSigmas`'
+/// defaults, because after the colour distance has judged the noise the
+/// features only need to keep distinct surfaces apart.
+constexpr FeatureSigmas denoise_feature_sigmas { 0.3f, 0.6f, 1.0f };
+/// `nlmeans` strength when the variance is measured (guide or halves).
+constexpr float denoise_measured_strength = 1.0f;
+/// `nlmeans` strength when the variance is estimated from the neighbourhood.
+constexpr float denoise_estimated_strength = 0.45f;
+
+}  // namespace mcdenoise

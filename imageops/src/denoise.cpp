@@ -1,0 +1,117 @@
+// denoise.cpp: the one-call denoiser, a fixed chain of this library's
+// filters whose strength follows from the guides it is given.
+#include <mcdenoise/denoise.h>
+#include <mcdenoise/fireflies.h>
+#include <mcdenoise/nlmeans.h>
+
+#include "feature_field.h"
+#include "operation.h"
+#include "window.h"
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <string>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+constexpr const char* op_name     = "denoise";
+constexpr int search_radius       = 7;
+constexpr int patch_radius        = 1;
+constexpr float firefly_factor    = 2.0f;
+constexpr int firefly_radius      = 2;
+
+/// The variance of the full estimate from two independent halves, over
+/// `region`: the 3x3 mean of (half_a - half_b)^2 / 4 per colour channel.
+bool variance_from_halves(ImageBuf& dst, const Guides& guides, const ROI& region,
+                          int nthreads, ImageBuf& variance)
+{
+    ImageBuf diff;
+    if (!OIIO::ImageBufAlgo::sub(diff, *guides.half_a, *guides.half_b, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(diff, diff, diff, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(diff, diff, 0.25f, region, nthreads)
+        || !mean(variance, diff, 3, region, nthreads)) {
+        dst.errorfmt("{}: variance from half_a, half_b: {}", op_name,
+                     variance.has_error() ? variance.geterror() : diff.geterror());
+        return false;
+    }
+    return true;
+}
+
+/// Check the halves: both or neither, each with the beauty's colour
+/// channels, covering `roi`.
+bool check_halves(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, const ROI& roi)
+{
+    if (!guides.half_a && !guides.half_b)
+        return true;
+    if (!guides.half_a || !guides.half_b) {
+        dst.errorfmt("{}: half_a and half_b go together; only {} was given", op_name,
+                     guides.half_a ? "half_a" : "half_b");
+        return false;
+    }
+    const int nc = colour_channels(beauty.nchannels());
+    return check_guide(op_name, "half_a", dst, *guides.half_a, nc, roi)
+           && check_guide(op_name, "half_b", dst, *guides.half_b, nc, roi);
+}
+
+/// The names of the guides present, comma separated.
+std::string guide_names(const Guides& guides)
+{
+    std::string names;
+    const std::pair<const ImageBuf*, const char*> all[] = {
+        { guides.object_id, "object_id" }, { guides.normal, "normal" },
+        { guides.depth, "depth" },         { guides.albedo, "albedo" },
+        { guides.variance, "variance" },   { guides.half_a, "half_a" },
+        { guides.half_b, "half_b" }
+    };
+    for (const auto& [image, name] : all)
+        if (image)
+            names += (names.empty() ? "" : ",") + std::string(name);
+    return names;
+}
+
+}  // namespace
+
+bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
+{
+    if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, guides, roi)
+        || !check_halves(dst, beauty, guides, roi))
+        return false;
+    // Everything the nlmeans windows and patches (and an estimated
+    // variance's 3x3 window) read, so the result does not depend on the ROI.
+    ROI region    = grow_and_clip(roi, search_radius + patch_radius + 1, beauty.roi());
+    region.chbegin = 0;
+    region.chend   = beauty.nchannels();
+    ImageBuf clamped, halves_variance;
+    Guides used = guides;
+    if (!clamp_fireflies(clamped, beauty, guides, firefly_factor, firefly_radius, region,
+                         nthreads)) {
+        dst.errorfmt("{}: {}", op_name, clamped.geterror());
+        return false;
+    }
+    if (!guides.variance && guides.half_a) {
+        ROI colour    = region;
+        colour.chend  = colour_channels(beauty.nchannels());
+        if (!variance_from_halves(dst, guides, colour, nthreads, halves_variance))
+            return false;
+        used.variance = &halves_variance;
+    }
+    const float strength = used.variance ? denoise_measured_strength
+                                         : denoise_estimated_strength;
+    if (!nlmeans(dst, clamped, used, search_radius, patch_radius, strength,
+                 denoise_feature_sigmas, roi, nthreads))
+        return false;
+    dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
+    return true;
+}
+
+ImageBuf denoise(const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) { return denoise(dst, beauty, guides, roi, nthreads); });
+}
+
+}  // namespace mcdenoise

@@ -1,0 +1,105 @@
+// fireflies.cpp: the firefly clamp: each pixel's luminance against a
+// percentile of its (same-object) neighbours'.
+#include <mcdenoise/fireflies.h>
+
+#include "feature_field.h"
+#include "operation.h"
+#include "window.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+constexpr const char* op_name = "clamp_fireflies";
+
+/// The factor pixel (x, y)'s colour is multiplied by: 1 unless its luminance
+/// exceeds `factor` times the 75th-percentile luminance of its viable
+/// neighbours. `scratch` holds at least (2 radius + 1)^2 floats.
+float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, int radius,
+                  int x, int y, std::vector<float>& scratch)
+{
+    const ROI& reg   = colour.region;
+    const Span xs    = clip_window(x, radius, reg.xbegin, reg.xend);
+    const Span ys    = clip_window(y, radius, reg.ybegin, reg.yend);
+    const int64_t id = ids ? ids->at(x, y) : 0;
+    size_t n         = 0;
+    for (int qy = ys.begin; qy < ys.end; ++qy)
+        for (int qx = xs.begin; qx < xs.end; ++qx)
+            if ((qx != x || qy != y) && (!ids || ids->at(qx, qy) == id))
+                scratch[n++] = colour.luminance[colour.offset(qx, qy)];
+    if (n == 0)
+        return 1.0f;
+    const size_t k = (3 * (n - 1)) / 4;
+    std::nth_element(scratch.begin(), scratch.begin() + std::ptrdiff_t(k),
+                     scratch.begin() + std::ptrdiff_t(n));
+    const float bound = factor * scratch[k];
+    const float lum   = colour.luminance[colour.offset(x, y)];
+    if (!(lum > bound))
+        return 1.0f;
+    return bound > 0.0f ? bound / lum : 0.0f;
+}
+
+}  // namespace
+
+bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, float factor,
+                     int radius, ROI roi, int nthreads)
+{
+    if (!(factor >= 1.0f) || !std::isfinite(factor)) {
+        dst.errorfmt("{}: factor must be a finite number >= 1, got {}", op_name, factor);
+        return false;
+    }
+    if (radius < 1 || radius > max_firefly_radius) {
+        dst.errorfmt("{}: radius must be 1..{}, got {}", op_name, max_firefly_radius, radius);
+        return false;
+    }
+    if (!resolve_roi(op_name, dst, beauty, roi)
+        || (guides.object_id
+            && !check_guide(op_name, "object_id", dst, *guides.object_id, 1, roi)))
+        return false;
+    ROI region    = grow_and_clip(roi, radius, beauty.roi());
+    region.chbegin = 0;
+    region.chend   = beauty.nchannels();
+    PixelBlock block;
+    IdPlane ids;
+    if (!read_beauty(op_name, dst, beauty, region, block)
+        || (guides.object_id
+            && !load_object_ids(op_name, dst, *guides.object_id, region, nthreads, ids)))
+        return false;
+    const ColourField colour = colour_field(block, region, nthreads);
+    ResultPixels result;
+    if (!begin_result(op_name, dst, beauty, { &beauty, guides.object_id }, roi, result))
+        return false;
+    const int ncolour  = colour.nchannels();
+    const IdPlane* idp = guides.object_id ? &ids : nullptr;
+    parallel_rows(roi, nthreads, [&](int y) {
+        std::vector<float> scratch(size_t((2 * radius + 1) * (2 * radius + 1)));
+        float* out = result.pixel(roi.xbegin, y);
+        for (int x = roi.xbegin; x < roi.xend; ++x, out += result.pixel_stride()) {
+            const float scale = clamp_scale(colour, idp, factor, radius, x, y, scratch);
+            const float* in   = block.pixel(x, y);
+            for (int ch = roi.chbegin; ch < roi.chend; ++ch) {
+                const float v = in[ch];
+                const bool scaled = ch < ncolour && std::isfinite(v);
+                out[ch - roi.chbegin] = scaled ? v * scale : v;
+            }
+        }
+    });
+    return finish_result(op_name, dst, result);
+}
+
+ImageBuf clamp_fireflies(const ImageBuf& beauty, const Guides& guides, float factor, int radius,
+                         ROI roi, int nthreads)
+{
+    return value_form([&](ImageBuf& dst) {
+        return clamp_fireflies(dst, beauty, guides, factor, radius, roi, nthreads);
+    });
+}
+
+}  // namespace mcdenoise
