@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace mcdenoise {
@@ -18,6 +19,9 @@ using OIIO::ROI;
 namespace {
 
 constexpr const char* op_name = "clamp_fireflies";
+
+/// Rank of the percentile among n sorted neighbours.
+inline size_t percentile_rank(size_t n) { return (3 * (n - 1)) / 4; }
 
 /// The factor pixel (x, y)'s colour is multiplied by: 1 unless its luminance
 /// exceeds `factor` times the 75th-percentile luminance of its viable
@@ -36,7 +40,7 @@ float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, i
                 scratch[n++] = colour.luminance[colour.offset(qx, qy)];
     if (n == 0)
         return 1.0f;
-    const size_t k = (3 * (n - 1)) / 4;
+    const size_t k = percentile_rank(n);
     std::nth_element(scratch.begin(), scratch.begin() + std::ptrdiff_t(k),
                      scratch.begin() + std::ptrdiff_t(n));
     const float bound = factor * scratch[k];
@@ -44,6 +48,58 @@ float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, i
     if (!(lum > bound))
         return 1.0f;
     return bound > 0.0f ? bound / lum : 0.0f;
+}
+
+/// For row y of `roi`, mark in `suspect` the pixels `clamp_scale` may
+/// change. A pixel is kept exactly when at least n - k of its n viable
+/// neighbours q have factor * L_q >= L_p (k the percentile rank): scaling by
+/// `factor` keeps the order, so then factor * s_k >= L_p. Counting needs no
+/// sort and runs along the row.
+void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, int radius,
+                   const ROI& roi, int y, std::vector<uint16_t>& count,
+                   std::vector<uint16_t>& viable, std::vector<uint8_t>& suspect)
+{
+    const ROI& reg = colour.region;
+    const int w    = roi.width();
+    std::fill(count.begin(), count.end(), uint16_t(0));
+    std::fill(viable.begin(), viable.end(), uint16_t(0));
+    const float* lp = colour.luminance.data() + colour.offset(roi.xbegin, y);
+    for (int dy = -radius; dy <= radius; ++dy) {
+        if (y + dy < reg.ybegin || y + dy >= reg.yend)
+            continue;
+        for (int dx = -radius; dx <= radius; ++dx) {
+            if (dx == 0 && dy == 0)
+                continue;
+            const int i0 = std::max(0, reg.xbegin - dx - roi.xbegin);
+            const int i1 = std::min(w, reg.xend - dx - roi.xbegin);
+            if (i0 >= i1)
+                continue;
+            // Pointers start at i0: the neighbour of i < i0 lies outside.
+            const int n = i1 - i0, xq = roi.xbegin + i0 + dx;
+            const float* p  = lp + i0;
+            const float* q  = colour.luminance.data() + colour.offset(xq, y + dy);
+            uint16_t* c     = count.data() + i0;
+            uint16_t* v     = viable.data() + i0;
+            if (!ids) {
+                for (int i = 0; i < n; ++i) {
+                    v[i] += 1;
+                    c[i] += uint16_t(factor * q[i] >= p[i]);
+                }
+                continue;
+            }
+            const int64_t* ip = &ids->at(roi.xbegin + i0, y);
+            const int64_t* iq = &ids->at(xq, y + dy);
+            for (int i = 0; i < n; ++i) {
+                const uint16_t same = uint16_t(ip[i] == iq[i]);
+                v[i] += same;
+                c[i] += uint16_t(same & uint16_t(factor * q[i] >= p[i]));
+            }
+        }
+    }
+    for (int i = 0; i < w; ++i) {
+        const size_t n = viable[size_t(i)];
+        suspect[size_t(i)] = n > 0 && count[size_t(i)] < n - percentile_rank(n);
+    }
 }
 
 }  // namespace
@@ -79,10 +135,16 @@ bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
     const int ncolour  = colour.nchannels();
     const IdPlane* idp = guides.object_id ? &ids : nullptr;
     parallel_rows(roi, nthreads, [&](int y) {
+        const size_t w = size_t(roi.width());
         std::vector<float> scratch(size_t((2 * radius + 1) * (2 * radius + 1)));
+        std::vector<uint16_t> count(w), viable(w);
+        std::vector<uint8_t> suspect(w);
+        find_suspects(colour, idp, factor, radius, roi, y, count, viable, suspect);
         float* out = result.pixel(roi.xbegin, y);
         for (int x = roi.xbegin; x < roi.xend; ++x, out += result.pixel_stride()) {
-            const float scale = clamp_scale(colour, idp, factor, radius, x, y, scratch);
+            const float scale = suspect[size_t(x - roi.xbegin)]
+                                    ? clamp_scale(colour, idp, factor, radius, x, y, scratch)
+                                    : 1.0f;
             const float* in   = block.pixel(x, y);
             for (int ch = roi.chbegin; ch < roi.chend; ++ch) {
                 const float v = in[ch];
