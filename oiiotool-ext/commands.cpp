@@ -14,6 +14,12 @@ float Call::number(size_t i) const { return OIIO::Strutil::stof(values.at(i)); }
 
 const ImageBuf& Call::guide(Role role) const { return guides.images.at(role); }
 
+const ImageBuf* Call::optional_guide(Role role) const
+{
+    const auto found = guides.images.find(role);
+    return found == guides.images.end() ? nullptr : &found->second;
+}
+
 namespace {
 
 /// The window-side parameter every window filter takes.
@@ -23,6 +29,27 @@ const Param levels_param = { "LEVELS", ParamType::integer, "number of depth leve
 const Param focus_param = { "FOCUS", ParamType::integer, "the level in focus, 0..LEVELS-1 (0 is nearest)" };
 const Param near_param = { "NEAR", ParamType::number, "depth mapped to the first level (nearer clamps)" };
 const Param far_param = { "FAR", ParamType::number, "depth mapped past the last level (farther clamps)" };
+/// The parameters of the feature-guided filters.
+const Param iterations_param = { "ITERATIONS", ParamType::integer, "a-trous passes, 1..10 (step 2^i)" };
+const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)" };
+
+/// The guides the feature-guided filters weigh by, when present (the
+/// variance guide only steers the filters with a colour-noise weight).
+const std::vector<Role> feature_roles = { Role::id, Role::normal, Role::depth, Role::albedo };
+const std::vector<Role> feature_and_variance_roles = { Role::id, Role::normal, Role::depth, Role::albedo,
+                                                       Role::variance };
+
+/// The present guides of `call` in the library's form.
+mcdenoise::Guides feature_guides(const Call& call)
+{
+    mcdenoise::Guides guides;
+    guides.object_id = call.optional_guide(Role::id);
+    guides.normal    = call.optional_guide(Role::normal);
+    guides.depth     = call.optional_guide(Role::depth);
+    guides.albedo    = call.optional_guide(Role::albedo);
+    guides.variance  = call.optional_guide(Role::variance);
+    return guides;
+}
 
 }  // namespace
 
@@ -111,6 +138,45 @@ const std::vector<Command>& command_table()
           [](const Call& c) {
               return mcdenoise::dof(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::depth), c.integer(0),
                                     c.integer(1), c.number(2), c.number(3), {}, c.nthreads);
+          } },
+        { "cross-bilateral", "cross_bilateral", "cross_bilateral.h", { size_param }, {},
+          "Joint bilateral filter: spatial gaussian (sigma 2) times the feature weight of the guides "
+          "present (id: hard edge; normal, depth, albedo: gaussian falloff).",
+          "mcdtool render.exr --cross-bilateral 7 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::cross_bilateral(c.dst, c.beauty, feature_guides(c), c.integer(0), 2.0f, 0.0f, {},
+                                                {}, c.nthreads);
+          },
+          feature_roles },
+        { "atrous", "atrous", "atrous.h", { iterations_param }, {},
+          "Edge-avoiding a-trous wavelet filter with SVGF's variance-guided luminance weight (variance "
+          "estimated from the beauty when no variance guide is present) and the feature weight.",
+          "mcdtool render.exr --demodulate --atrous 5 --remodulate -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::atrous(c.dst, c.beauty, feature_guides(c), c.integer(0), 4.0f, {}, {}, c.nthreads);
+          },
+          feature_and_variance_roles },
+        { "nlmeans", "nlmeans", "nlmeans.h", { search_param }, {},
+          "Non-local means with variance-normalised 3x3 patch distances (strength 0.45) and the "
+          "feature weight.",
+          "mcdtool render.exr --nlmeans 7 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::nlmeans(c.dst, c.beauty, feature_guides(c), c.integer(0), 1, 0.45f, {}, {},
+                                        c.nthreads);
+          },
+          feature_and_variance_roles },
+        { "demodulate", "demodulate", "demodulate.h", {}, { Role::albedo },
+          "Divide the colour channels by albedo + 0.01 so the next filters do not blur texture; undo "
+          "with --remodulate.",
+          "mcdtool render.exr --demodulate --nlmeans 7 --remodulate -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::demodulate(c.dst, c.beauty, c.guide(Role::albedo), 0.01f, {}, c.nthreads);
+          } },
+        { "remodulate", "remodulate", "demodulate.h", {}, { Role::albedo },
+          "Multiply the colour channels by albedo + 0.01: the inverse of --demodulate.",
+          "mcdtool render.exr --demodulate --cross-bilateral 7 --remodulate -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::remodulate(c.dst, c.beauty, c.guide(Role::albedo), 0.01f, {}, c.nthreads);
           } },
     };
     return table;

@@ -47,6 +47,8 @@ struct Call {
     float number(size_t i) const;
     /// The guide for `role` (the runner checks presence before calling).
     const ImageBuf& guide(Role role) const;
+    /// The guide for `role` if the input or an --aov gave one, else nullptr.
+    const ImageBuf* optional_guide(Role role) const;
 };
 
 /// A library call with the driver's calling convention.
@@ -62,6 +64,7 @@ struct Command {
     const char* help;
     const char* example;           ///< a full mcdtool command line
     CallFn call;
+    std::vector<Role> optional_roles = {};  ///< guides it uses when present
 };
 
 /// Every command, in help order.

@@ -73,13 +73,29 @@ std::string cell(const std::string& text)
     return OIIO::Strutil::replace(text, "|", "\\|", true);
 }
 
-/// "id, normal": the roles a command needs, or "-".
-std::string roles_text(const Command& command)
+/// "id, normal": the roles in `roles`, or "-".
+std::string role_names(const std::vector<Role>& roles)
 {
     std::vector<std::string> names;
-    for (Role role : command.roles)
+    for (Role role : roles)
         names.push_back(role_info(role).name);
     return names.empty() ? "-" : OIIO::Strutil::join(names, ", ");
+}
+
+/// "id, normal" for the roles a command needs, then "albedo (if present)"
+/// for those it uses when present; "-" for none.
+std::string roles_text(const Command& command)
+{
+    if (command.optional_roles.empty())
+        return role_names(command.roles);
+    const std::string optional = role_names(command.optional_roles) + " (each if present)";
+    return command.roles.empty() ? optional : role_names(command.roles) + ", " + optional;
+}
+
+/// True if a command reads any guide.
+bool uses_guides(const Command& command)
+{
+    return !command.roles.empty() || !command.optional_roles.empty();
 }
 
 /// "id, IndexOB": the pass names a role is discovered by.
@@ -112,7 +128,7 @@ std::string help_text()
     text += "Commands run left to right on the beauty channels; each is one library call.\n";
     for (const Command& command : command_table()) {
         std::string help = command.help;
-        if (!command.roles.empty())
+        if (uses_guides(command))
             help += " Guides: " + roles_text(command) + ".";
         text += help_row(command_usage(command), help);
     }
@@ -153,12 +169,15 @@ std::string help_markdown()
                      command.function, command.header, cell(command.help));
     for (const Command& command : command_table()) {
         md += format("\n### `--{}`\n\n{}\n\n", command.name, command.help);
-        md += "| parameter | type | meaning |\n|---|---|---|\n";
+        if (!command.params.empty())
+            md += "| parameter | type | meaning |\n|---|---|---|\n";
         for (const Param& param : command.params)
             md += format("| `{}` | {} | {} |\n", param.name,
                          param.type == ParamType::integer ? "integer" : "number", cell(param.help));
         if (!command.roles.empty())
-            md += format("\nNeeds the guides: {}.\n", roles_text(command));
+            md += format("\nNeeds the guides: {}.\n", role_names(command.roles));
+        if (!command.optional_roles.empty())
+            md += format("\nUses the guides when present: {}.\n", role_names(command.optional_roles));
         md += format("\n```\n{}\n```\n", command.example);
     }
 
