@@ -6,6 +6,7 @@
 
 #include "oiiotool-ext/error.h"
 
+#include <mcdenoise/features.h>
 #include <mcdenoise/metrics.h>
 
 #include <stdexcept>
@@ -35,6 +36,25 @@ void bind_comparison(py::module_& m)
         .def("__repr__", [](const ImageComparison& c) {
             return py::str("ImageComparison(rel_mse={}, mse={}, psnr={}, ssim={}, pixels={}, nonfinite={})")
                 .format(c.rel_mse, c.mse, c.psnr, c.ssim, c.pixels, c.nonfinite);
+        });
+}
+
+/// The feature fall-offs of the feature-guided filters, fields as in C++.
+void bind_feature_sigmas(py::module_& m)
+{
+    using mcdenoise::FeatureSigmas;
+    const FeatureSigmas defaults;
+    py::class_<FeatureSigmas>(m, "FeatureSigmas",
+                              "How fast a neighbour's weight falls with each feature difference "
+                              "(see features.h); a sigma <= 0 leaves that feature out.")
+        .def(py::init([](float albedo, float normal, float depth) { return FeatureSigmas{ albedo, normal, depth }; }),
+             py::arg("albedo") = defaults.albedo, py::arg("normal") = defaults.normal,
+             py::arg("depth") = defaults.depth)
+        .def_readwrite("albedo", &FeatureSigmas::albedo)
+        .def_readwrite("normal", &FeatureSigmas::normal)
+        .def_readwrite("depth", &FeatureSigmas::depth)
+        .def("__repr__", [](const FeatureSigmas& s) {
+            return py::str("FeatureSigmas(albedo={:.7g}, normal={:.7g}, depth={:.7g})").format(s.albedo, s.normal, s.depth);
         });
 }
 
@@ -68,6 +88,7 @@ PYBIND11_MODULE(_mcdenoise, m)
     });
 
     mcdpy::bind_comparison(m);
+    mcdpy::bind_feature_sigmas(m);
     mcdpy::bind_operations(m);
     mcdpy::bind_driver(m);
 }

@@ -1,10 +1,12 @@
 // operation.h: binding one library operation from its value form. Every
 // `const ImageBuf&` argument becomes an ImageArg (ImageBuf or numpy array),
+// `const Guides&` a dict of them (GuidesArg),
 // `roi` and `nthreads` are appended with the library's defaults, the GIL is
 // released while the library runs, and an image result with an error raises
 // mcdenoise.Error carrying the library's message.
 #pragma once
 
+#include "guides_arg.h"
 #include "image_arg.h"
 #include "library_docs.h"
 
@@ -28,10 +30,14 @@ template <typename T> struct PyArg {
 template <> struct PyArg<const ImageBuf&> {
     using type = const ImageArg&;
 };
+template <> struct PyArg<const mcdenoise::Guides&> {
+    using type = const GuidesArg&;
+};
 
 /// The library-side value of a Python argument.
 template <typename T> const T& unwrap(const T& value) { return value; }
 inline const ImageBuf& unwrap(const ImageArg& image) { return image.image(); }
+inline const mcdenoise::Guides& unwrap(const GuidesArg& guides) { return guides.guides(); }
 
 /// The library's doc comment of `name` (empty if it has none).
 inline const char* library_doc(const std::string& name)

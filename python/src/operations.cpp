@@ -1,6 +1,8 @@
 // operations.cpp: the table of bound library operations. Exposing a filter
 // is one entry: its name, its value form, and its arguments after the
-// beauty with the header's defaults (roi and nthreads are added).
+// beauty with the header's defaults (roi and nthreads are added). The
+// classes the arguments and results use (ImageComparison, FeatureSigmas)
+// are bound first, in module.cpp.
 #include "operations.h"
 
 #include "operation.h"
@@ -34,6 +36,18 @@ void bind_operations(py::module_& m)
                   arg("depth_near") = 0.0f, arg("depth_far") = 0.0f);
     def_operation(m, "dof", mcd::dof, arg("beauty"), arg("object_id"), arg("depth"), arg("levels"),
                   arg("focus_level"), arg("depth_near") = 0.0f, arg("depth_far") = 0.0f);
+
+    def_operation(m, "cross_bilateral", mcd::cross_bilateral, arg("beauty"), arg("guides"), arg("size") = 7,
+                  arg("sigma_spatial") = 2.0f, arg("sigma_color") = 0.0f, arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "atrous", mcd::atrous, arg("beauty"), arg("guides"), arg("iterations") = 5,
+                  arg("sigma_luminance") = 4.0f, arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "nlmeans", mcd::nlmeans, arg("beauty"), arg("guides"), arg("search_radius") = 7,
+                  arg("patch_radius") = 1, arg("strength") = 0.45f, arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"), arg("factor") = 2.0f,
+                  arg("radius") = 2);
+    def_operation(m, "denoise", mcd::denoise, arg("beauty"), arg("guides") = py::none());
+    def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"), arg("epsilon") = 0.01f);
+    def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"), arg("epsilon") = 0.01f);
 
     def_operation(m, "compare_images", mcd::compare_images, arg("result"), arg("reference"));
     def_operation(m, "rel_mse", mcd::rel_mse, arg("result"), arg("reference"));
