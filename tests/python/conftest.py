@@ -76,7 +76,7 @@ class Cluster:
             # No nanny: a killed worker stays dead, as when a machine is lost.
             self.start(f"worker{i}", [sys.executable, "-m", "distributed.cli.dask_worker", self.address,
                                       "--host", "127.0.0.1", "--nthreads", "1", "--no-nanny", "--no-dashboard",
-                                      "--name", f"worker{i}", "--local-directory", str(directory / f"w{i}")])
+                                      "--name", f"worker{i}", "--local-directory", str(self.directory / f"w{i}")])
         self.client = self.connect(workers)
 
     def start(self, name, command):
