@@ -31,6 +31,7 @@ const Param near_param = { "NEAR", ParamType::number, "depth mapped to the first
 const Param far_param = { "FAR", ParamType::number, "depth mapped past the last level (farther clamps)" };
 /// The parameters of the feature-guided filters.
 const Param iterations_param = { "ITERATIONS", ParamType::integer, "a-trous passes, 1..10 (step 2^i)" };
+const Param factor_param = { "FACTOR", ParamType::number, "times the 75th-percentile neighbour a pixel may be, >= 1" };
 const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)" };
 
 /// The guides the feature-guided filters weigh by, when present (the
@@ -38,6 +39,9 @@ const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window
 const std::vector<Role> feature_roles = { Role::id, Role::normal, Role::depth, Role::albedo };
 const std::vector<Role> feature_and_variance_roles = { Role::id, Role::normal, Role::depth, Role::albedo,
                                                        Role::variance };
+/// Every guide `denoise` can use.
+const std::vector<Role> denoise_roles = { Role::id,       Role::normal, Role::depth, Role::albedo,
+                                          Role::variance, Role::half_a, Role::half_b };
 
 /// The present guides of `call` in the library's form.
 mcdenoise::Guides feature_guides(const Call& call)
@@ -48,6 +52,8 @@ mcdenoise::Guides feature_guides(const Call& call)
     guides.depth     = call.optional_guide(Role::depth);
     guides.albedo    = call.optional_guide(Role::albedo);
     guides.variance  = call.optional_guide(Role::variance);
+    guides.half_a    = call.optional_guide(Role::half_a);
+    guides.half_b    = call.optional_guide(Role::half_b);
     return guides;
 }
 
@@ -165,6 +171,20 @@ const std::vector<Command>& command_table()
                                         c.nthreads);
           },
           feature_and_variance_roles },
+        { "denoise", "denoise", "denoise.h", {}, {},
+          "The one-call denoiser: clamps fireflies, then non-local means with the variance (from the "
+          "variance guide, the halves, or estimated) and the feature weight of every guide present.",
+          "mcdtool render.exr --denoise -o clean.exr",
+          [](const Call& c) { return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads); },
+          denoise_roles },
+        { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
+          "Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their 5x5 "
+          "neighbours (of the same object when an id guide is present).",
+          "mcdtool render.exr --clamp-fireflies 2 --object-median 7 -o clean.exr",
+          [](const Call& c) {
+              return mcdenoise::clamp_fireflies(c.dst, c.beauty, feature_guides(c), c.number(0), 2, {}, c.nthreads);
+          },
+          { Role::id } },
         { "demodulate", "demodulate", "demodulate.h", {}, { Role::albedo },
           "Divide the colour channels by albedo + 0.01 so the next filters do not blur texture; undo "
           "with --remodulate.",
