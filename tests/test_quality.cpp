@@ -147,11 +147,12 @@ protected:
         raw_256    = many.rel_mse(many.noisy.beauty);
         chain      = s.rel_mse(testimg::best_chain(s.noisy));
         gaussian_7 = s.rel_mse(mcdenoise::gaussian(s.noisy.beauty, 7));
-        std::printf("%s: denoise %.5f, beauty only %.5f, raw 256 spp %.5f, chain %.5f, "
-                    "gaussian 7 %.5f\n",
-                    GetParam(), denoised, alone, raw_256, chain, gaussian_7);
+        raw_16     = s.rel_mse(s.noisy.beauty);
+        std::printf("%s: denoise %.5f, beauty only %.5f, raw 16 spp %.5f, raw 256 spp %.5f, "
+                    "chain %.5f, gaussian 7 %.5f\n",
+                    GetParam(), denoised, alone, raw_16, raw_256, chain, gaussian_7);
     }
-    double denoised = 0, alone = 0, raw_256 = 0, chain = 0, gaussian_7 = 0;
+    double denoised = 0, alone = 0, raw_16 = 0, raw_256 = 0, chain = 0, gaussian_7 = 0;
 };
 
 TEST_P(DenoiseOn, HalvesTheBestChainsError)
@@ -162,6 +163,19 @@ TEST_P(DenoiseOn, HalvesTheBestChainsError)
 TEST_P(DenoiseOn, BeautyAloneBeatsGaussian7)
 {
     EXPECT_LT(alone, gaussian_7);
+}
+
+// 16x fewer samples for the same error. Measured denoise / raw 256 spp:
+// cornell 0.70, mirrors 0.88, interior 0.46. Not reached on textured (7.4x)
+// and dof (2.7x): there the albedo and id buffers carry sub-pixel texture
+// and defocus the features cannot explain (docs/quality.md).
+TEST_P(DenoiseOn, BeatsRaw256SppOnSmoothlyLitScenes)
+{
+    const std::string scene = GetParam();
+    if (scene == "textured" || scene == "dof")
+        EXPECT_LT(denoised, 0.7 * raw_16);
+    else
+        EXPECT_LT(denoised, raw_256);
 }
 
 INSTANTIATE_TEST_SUITE_P(RefSet, DenoiseOn,
