@@ -1,0 +1,21 @@
+# mcd_add_pytest_tests(PREFIX FILE ENVIRONMENT LABELS): one CTest test
+# PREFIX.<name> per top-level `def test_<name>(` of the pytest FILE, run with
+# Debian's /usr/bin/python3 in FILE's directory, so CTest's summary counts
+# every Python test case. ENVIRONMENT and LABELS are lists; a test whose
+# pytest run reports "N skipped" counts as skipped.
+function(mcd_add_pytest_tests prefix pytest_file environment labels)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${pytest_file})
+  get_filename_component(pytest_dir ${pytest_file} DIRECTORY)
+  file(STRINGS ${pytest_file} test_lines REGEX "^def test_[a-z0-9_]+\\(")
+  foreach(line IN LISTS test_lines)
+    string(REGEX REPLACE "^def (test_[a-z0-9_]+)\\(.*" "\\1" test_name "${line}")
+    add_test(NAME ${prefix}.${test_name}
+             COMMAND /usr/bin/python3 -m pytest -q -p no:cacheprovider
+                     --basetemp=${CMAKE_CURRENT_BINARY_DIR}/pytest-${test_name}
+                     "${pytest_file}::${test_name}"
+             WORKING_DIRECTORY ${pytest_dir})
+    set_tests_properties(${prefix}.${test_name} PROPERTIES
+                         ENVIRONMENT "${environment}" LABELS "${labels}"
+                         SKIP_REGULAR_EXPRESSION "[0-9]+ skipped")
+  endforeach()
+endfunction()
