@@ -166,9 +166,10 @@ TEST_P(DenoiseOn, BeautyAloneBeatsGaussian7)
 }
 
 // 16x fewer samples for the same error. Measured denoise / raw 256 spp:
-// cornell 0.70, mirrors 0.88, interior 0.46. Not reached on textured (7.4x)
-// and dof (2.7x): there the albedo and id buffers carry sub-pixel texture
-// and defocus the features cannot explain (docs/quality.md).
+// cornell 0.68, mirrors 0.91, interior 0.49. Not reached on textured (7.3x)
+// and dof (2.3x), where denoise is 0.55 and 0.17 of the raw 16 spp error:
+// there sub-pixel texture and defocus leave a bias the features cannot
+// explain (docs/quality.md).
 TEST_P(DenoiseOn, BeatsRaw256SppOnSmoothlyLitScenes)
 {
     const std::string scene = GetParam();

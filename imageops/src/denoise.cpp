@@ -20,7 +20,7 @@ using OIIO::ROI;
 namespace {
 
 constexpr const char* op_name     = "denoise";
-constexpr int search_radius       = 7;
+constexpr int search_radius       = 5;
 constexpr int patch_radius        = 1;
 constexpr float firefly_factor    = 2.0f;
 constexpr int firefly_radius      = 2;

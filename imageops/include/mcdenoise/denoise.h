@@ -13,7 +13,7 @@ namespace mcdenoise {
 /// 1. `clamp_fireflies` (factor 2, radius 2, within objects when
 ///    `object_id` is given): the few very bright samples that dominate the
 ///    error are scaled down before anything is averaged.
-/// 2. `nlmeans` (search radius 7, patch radius 1) on the clamped beauty, with
+/// 2. `nlmeans` (search radius 5, patch radius 1) on the clamped beauty, with
 ///    variance-normalised patch distances (Rousselle, Knaus & Zwicker 2012)
 ///    and feature weights (Rousselle, Manzi & Zwicker 2013) with fall-offs
 ///    `denoise_feature_sigmas`.
