@@ -104,64 +104,68 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
     const std::vector<float> inv
         = luminance_scale(cur, sigma_luminance, out_region, dw, nthreads);
     const SumSource& src = cur.values;
-    const int n = out_region.width(), x0 = out_region.xbegin;
+    const int width = out_region.width();
     Iterate next;
     const int nch = src.nchannels();
     if (!result) {
         next.values.region = out_region;
-        next.values.value.assign(size_t(nch), std::vector<float>(size_t(n) * out_region.height()));
-        next.variance.resize(size_t(n) * out_region.height());
+        next.values.value.assign(size_t(nch),
+                                 std::vector<float>(size_t(width) * out_region.height()));
+        next.variance.resize(size_t(width) * out_region.height());
     }
     parallel_rows(out_region, nthreads, [&](int y) {
-        const int c0 = result ? result->roi.chbegin : 0;
-        const int c1 = result ? result->roi.chend : nch;
-        WeightedSums sums(c0, c1, n, src.masked());
-        const size_t len = static_cast<size_t>(n);
-        std::vector<float> e(len), w(len), wsum(len, 0.0f), w2var(len, 0.0f);
-        const float* lum_p = cur.luminance.data() + src.offset(x0, y);
-        const float* inv_p = inv.data() + size_t(y - out_region.ybegin) * n;
-        for (int ky = -tap_radius; ky <= tap_radius; ++ky) {
-            const int dy = ky * step;
-            if (y + dy < dw.ybegin || y + dy >= dw.yend)
-                continue;
-            for (int kx = -tap_radius; kx <= tap_radius; ++kx) {
-                const int dx = kx * step;
-                const int i0 = std::max(0, dw.xbegin - dx - x0);
-                const int i1 = std::min(n, dw.xend - dx - x0);
-                if (i0 >= i1)
+        for_each_segment(out_region.xbegin, out_region.xend, [&](int x0, int n) {
+            const int c0 = result ? result->roi.chbegin : 0;
+            const int c1 = result ? result->roi.chend : nch;
+            WeightedSums sums(c0, c1, n, src.masked());
+            const size_t len = static_cast<size_t>(n);
+            std::vector<float> e(len), w(len), wsum(len, 0.0f), w2var(len, 0.0f);
+            const float* lum_p = cur.luminance.data() + src.offset(x0, y);
+            const float* inv_p = inv.data() + size_t(y - out_region.ybegin) * width
+                                 + size_t(x0 - out_region.xbegin);
+            for (int ky = -tap_radius; ky <= tap_radius; ++ky) {
+                const int dy = ky * step;
+                if (y + dy < dw.ybegin || y + dy >= dw.yend)
                     continue;
-                const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
-                const size_t q = src.offset(x0 + dx, y + dy);
-                const float* lum_q = cur.luminance.data() + q;
-                const float* var_q = cur.variance.data() + q;
-                if (dx == 0 && dy == 0) {
-                    std::fill(w.begin() + i0, w.begin() + i1, h);
-                } else {
-                    std::fill(e.begin() + i0, e.begin() + i1, 0.0f);
-                    features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
-                    for (int i = i0; i < i1; ++i)
-                        e[i] += std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
-                    weights_from_exponents(e.data() + i0, h, i1 - i0, w.data() + i0);
-                    features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                for (int kx = -tap_radius; kx <= tap_radius; ++kx) {
+                    const int dx = kx * step;
+                    const int i0 = std::max(0, dw.xbegin - dx - x0);
+                    const int i1 = std::min(n, dw.xend - dx - x0);
+                    if (i0 >= i1)
+                        continue;
+                    const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
+                    const size_t q = src.offset(x0 + dx, y + dy);
+                    const float* lum_q = cur.luminance.data() + q;
+                    const float* var_q = cur.variance.data() + q;
+                    if (dx == 0 && dy == 0) {
+                        std::fill(w.begin() + i0, w.begin() + i1, h);
+                    } else {
+                        std::fill(e.begin() + i0, e.begin() + i1, 0.0f);
+                        features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
+                        for (int i = i0; i < i1; ++i)
+                            e[i] += std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
+                        weights_from_exponents(e.data() + i0, h, i1 - i0, w.data() + i0);
+                        features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                    }
+                    for (int i = i0; i < i1; ++i) {
+                        wsum[i] += w[i];
+                        w2var[i] += w[i] * w[i] * var_q[i];
+                    }
+                    sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
                 }
-                for (int i = i0; i < i1; ++i) {
-                    wsum[i] += w[i];
-                    w2var[i] += w[i] * w[i] * var_q[i];
-                }
-                sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
             }
-        }
-        if (result) {
-            result->empty_windows += sums.write(result->pixel(x0, y), result->pixel_stride());
-            return;
-        }
-        const size_t at = next.values.offset(x0, y);
-        std::vector<float*> planes(static_cast<size_t>(nch));
-        for (int c = 0; c < nch; ++c)
-            planes[size_t(c)] = next.values.value[size_t(c)].data() + at;
-        sums.write_planes(planes.data());
-        for (int i = 0; i < n; ++i)
-            next.variance[at + i] = w2var[i] / (wsum[i] * wsum[i]);
+            if (result) {
+                result->empty_windows += sums.write(result->pixel(x0, y), result->pixel_stride());
+                return;
+            }
+            const size_t at = next.values.offset(x0, y);
+            std::vector<float*> planes(static_cast<size_t>(nch));
+            for (int c = 0; c < nch; ++c)
+                planes[size_t(c)] = next.values.value[size_t(c)].data() + at;
+            sums.write_planes(planes.data());
+            for (int i = 0; i < n; ++i)
+                next.variance[at + i] = w2var[i] / (wsum[i] * wsum[i]);
+        });
     });
     if (!result)
         next.luminance = luminance_of(next.values, ncolour, nthreads);

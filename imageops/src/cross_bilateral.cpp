@@ -69,36 +69,37 @@ bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
     const float colour_scale  = by_color ? float(1.0 / (2.0 * double(sigma_color) * sigma_color))
                                          : 0.0f;
     parallel_rows(roi, nthreads, [&](int y) {
-        const int n = roi.width(), x0 = roi.xbegin;
-        WeightedSums sums(0, src.nchannels(), n, src.masked());
-        const size_t len = static_cast<size_t>(n);
-        std::vector<float> e(len), w(len);
-        for (int dy = -r; dy <= r; ++dy) {
-            if (y + dy < dw.ybegin || y + dy >= dw.yend)
-                continue;
-            for (int dx = -r; dx <= r; ++dx) {
-                // Pixels i0 .. i1 have their neighbour inside the data window.
-                const int i0 = std::max(0, dw.xbegin - dx - x0);
-                const int i1 = std::min(n, dw.xend - dx - x0);
-                if (i0 >= i1)
+        for_each_segment(roi.xbegin, roi.xend, [&](int x0, int n) {
+            WeightedSums sums(0, src.nchannels(), n, src.masked());
+            const size_t len = static_cast<size_t>(n);
+            std::vector<float> e(len), w(len);
+            for (int dy = -r; dy <= r; ++dy) {
+                if (y + dy < dw.ybegin || y + dy >= dw.yend)
                     continue;
-                const int m = i1 - i0, xa = x0 + i0;
-                if (dx == 0 && dy == 0) {
-                    std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
-                } else {
-                    std::fill(e.begin() + i0, e.begin() + i1,
-                              spatial_scale * float(dx * dx + dy * dy));
-                    features.add_exponent_row(y, xa, m, dx, dy, e.data() + i0);
-                    if (by_color)
-                        add_colour_exponent(colour, colour_scale, y, xa, m, dx, dy,
-                                            e.data() + i0);
-                    weights_from_exponents(e.data() + i0, 1.0f, m, w.data() + i0);
-                    features.mask_row(y, xa, m, dx, dy, w.data() + i0);
+                for (int dx = -r; dx <= r; ++dx) {
+                    // Pixels i0 .. i1 have their neighbour inside the data window.
+                    const int i0 = std::max(0, dw.xbegin - dx - x0);
+                    const int i1 = std::min(n, dw.xend - dx - x0);
+                    if (i0 >= i1)
+                        continue;
+                    const int m = i1 - i0, xa = x0 + i0;
+                    if (dx == 0 && dy == 0) {
+                        std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
+                    } else {
+                        std::fill(e.begin() + i0, e.begin() + i1,
+                                  spatial_scale * float(dx * dx + dy * dy));
+                        features.add_exponent_row(y, xa, m, dx, dy, e.data() + i0);
+                        if (by_color)
+                            add_colour_exponent(colour, colour_scale, y, xa, m, dx, dy,
+                                                e.data() + i0);
+                        weights_from_exponents(e.data() + i0, 1.0f, m, w.data() + i0);
+                        features.mask_row(y, xa, m, dx, dy, w.data() + i0);
+                    }
+                    sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
                 }
-                sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
             }
-        }
-        result.empty_windows += sums.write(result.pixel(x0, y), result.pixel_stride());
+            result.empty_windows += sums.write(result.pixel(x0, y), result.pixel_stride());
+        });
     });
     return finish_result(op, dst, result);
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace mcdenoise {
 
@@ -73,6 +74,24 @@ void estimate_variance(const float* plane, const ROI& src, const ROI& region,
             }
         out[i] = n > 1 ? float(sq / (n - 1)) : 0.0f;
     });
+}
+
+// The ids renumbered 0, 1, 2 ... in order of first appearance, so that
+// comparisons run on 32-bit lanes. Runs of one id are the common case.
+std::vector<int32_t> dense_keys(const std::vector<int64_t>& ids)
+{
+    std::vector<int32_t> keys(ids.size());
+    std::unordered_map<int64_t, int32_t> numbers;
+    int64_t last_id  = 0;
+    int32_t last_key = -1;
+    for (size_t i = 0; i < ids.size(); ++i) {
+        if (last_key < 0 || ids[i] != last_id) {
+            last_id  = ids[i];
+            last_key = numbers.emplace(last_id, int32_t(numbers.size())).first->second;
+        }
+        keys[i] = last_key;
+    }
+    return keys;
 }
 
 }  // namespace
@@ -143,10 +162,13 @@ void FeatureField::add_exponent_row(int y, int x0, int n, int dx, int dy, float*
 
 void FeatureField::mask_row(int y, int x0, int n, int dx, int dy, float* w) const
 {
-    if (!has_ids)
+    if (id_keys.empty())
         return;
-    const int64_t* a = &ids.at(x0, y);
-    const int64_t* b = &ids.at(x0 + dx, y + dy);
+    const size_t width = size_t(region.width());
+    const int32_t* a = id_keys.data() + size_t(y - region.ybegin) * width
+                       + size_t(x0 - region.xbegin);
+    const int32_t* b = id_keys.data() + size_t(y + dy - region.ybegin) * width
+                       + size_t(x0 + dx - region.xbegin);
     for (int i = 0; i < n; ++i)
         w[i] = a[i] == b[i] ? w[i] : 0.0f;
 }
@@ -157,9 +179,13 @@ bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
 {
     field.region = region;
     field.dims.clear();
-    field.has_ids = guides.object_id != nullptr;
-    if (field.has_ids && !load_object_ids(op, dst, *guides.object_id, region, nthreads, field.ids))
-        return false;
+    field.id_keys.clear();
+    if (guides.object_id) {
+        IdPlane ids;
+        if (!load_object_ids(op, dst, *guides.object_id, region, nthreads, ids))
+            return false;
+        field.id_keys = dense_keys(ids.values);
+    }
     if (guides.albedo && sigmas.albedo > 0.0f) {
         GuideChannels albedo;
         if (!load_guide_channels(op, dst, *guides.albedo, region, nthreads, albedo))

@@ -10,6 +10,7 @@
 #include "pixel_block.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace mcdenoise {
@@ -50,8 +51,9 @@ bool load_guide_channels(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageB
 struct FeatureField {
     OIIO::ROI region;
     std::vector<std::vector<float>> dims;
-    bool has_ids = false;
-    IdPlane ids;
+    /// Object ids renumbered densely (equal ids, equal keys), row-major
+    /// over `region`; empty without an object id guide.
+    std::vector<int32_t> id_keys;
 
     /// Add to `e[i]` the feature exponent `(A + N + Z) / 2` of center
     /// (x0 + i, y) and neighbour (x0 + i + dx, y + dy), for i < n. Both

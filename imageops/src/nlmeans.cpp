@@ -44,27 +44,29 @@ inline int patch_count(int p, int d, int f, int lo, int hi)
     return b - a + 1;
 }
 
-// Rows [y0, y1) of the ROI.
-void nlmeans_chunk(const NlmInputs& in, int y0, int y1, ResultPixels& result)
+// Rows [y0, y1), columns [x0, x0 + n) of the ROI.
+void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPixels& result)
 {
     const ROI& roi = in.roi;
     const ROI& dw  = in.dw;
-    const int r = in.r, f = in.f, n = roi.width(), x0 = roi.xbegin;
+    const int r = in.r, f = in.f;
     const int pw = n + 2 * f;          // distance rows: x from x0 - f
     const int ph = (y1 - y0) + 2 * f;  // rows from y0 - f
     const int nc = in.colour.nchannels();
     const float channel_mean = 1.0f / float(nc);
     std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
-        e(static_cast<size_t>(n)), w(static_cast<size_t>(n));
+        e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n));
     std::vector<WeightedSums> sums;
     for (int y = y0; y < y1; ++y)
         sums.emplace_back(roi.chbegin, roi.chend, n, in.values.masked());
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
+            for (int i = 0; i < n; ++i)
+                cx[i] = float(patch_count(x0 + i, dx, f, dw.xbegin, dw.xend));
             // Per-pixel distances d(x, x + o), 0 where either is outside.
             std::fill(dist.begin(), dist.end(), 0.0f);
             const int xa = std::max({ dw.xbegin, x0 - f, dw.xbegin - dx });
-            const int xb = std::min({ dw.xend, roi.xend + f, dw.xend - dx });
+            const int xb = std::min({ dw.xend, x0 + n + f, dw.xend - dx });
             for (int yy = std::max(dw.ybegin, y0 - f); yy < std::min(dw.yend, y1 + f); ++yy) {
                 if (yy + dy < dw.ybegin || yy + dy >= dw.yend || xa >= xb)
                     continue;
@@ -103,22 +105,22 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, ResultPixels& result)
                     s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
                     continue;
                 }
-                // Patch sums: down the rows, then along the columns.
+                // Patch sums: down the rows, then along the columns, each
+                // term in a fixed order; then the mean over the patch pixels
+                // inside the data window.
                 std::fill(column.begin(), column.end(), 0.0f);
                 for (int t = 0; t <= 2 * f; ++t) {
                     const float* d = dist.data() + size_t(y - y0 + t) * pw;
                     for (int i = 0; i < pw; ++i)
                         column[i] += d[i];
                 }
-                const int cy = patch_count(y, dy, f, dw.ybegin, dw.yend);
-                for (int i = i0; i < i1; ++i) {
-                    float sum = 0.0f;
-                    for (int t = 0; t <= 2 * f; ++t)
-                        sum += column[size_t(i + t)];
-                    const int px    = x0 + i;
-                    const int count = cy * patch_count(px, dx, f, dw.xbegin, dw.xend);
-                    e[i] = std::max(0.0f, sum / float(count));
-                }
+                std::fill(e.begin() + i0, e.begin() + i1, 0.0f);
+                for (int t = 0; t <= 2 * f; ++t)
+                    for (int i = i0; i < i1; ++i)
+                        e[i] += column[size_t(i + t)];
+                const float cy = float(patch_count(y, dy, f, dw.ybegin, dw.yend));
+                for (int i = i0; i < i1; ++i)
+                    e[i] = std::max(0.0f, e[i] / (cy * cx[i]));
                 in.features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
                 weights_from_exponents(e.data() + i0, 1.0f, i1 - i0, w.data() + i0);
                 in.features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
@@ -181,7 +183,9 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
                          search_radius, patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
-            nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), result);
+            for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
+                nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, result);
+            });
     });
     return finish_result(op, dst, result);
 }

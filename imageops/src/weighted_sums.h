@@ -62,6 +62,19 @@ private:
     std::vector<float> m_den;  // per channel when masked, else one run
 };
 
+/// Columns filtered together: a run short enough that the rows every tap
+/// reads stay in cache while all the taps go by.
+constexpr int segment_width = 256;
+
+/// Call `fn(x0, n)` for consecutive runs [x0, x0 + n) of at most
+/// `segment_width` columns covering [xbegin, xend).
+template<class Fn>
+void for_each_segment(int xbegin, int xend, Fn&& fn)
+{
+    for (int x0 = xbegin; x0 < xend; x0 += segment_width)
+        fn(x0, xend - x0 < segment_width ? xend - x0 : segment_width);
+}
+
 /// Past this exponent a float exp underflows to denormals: the weight is 0.
 constexpr float max_weight_exponent = 87.0f;
 
