@@ -14,6 +14,8 @@ import pytest
 
 MCDTOOL = os.environ.get("MCDTOOL", "mcdtool")
 TESTRENDER = os.environ.get("TESTRENDER", "testrender")
+#: The report's best chain, as mcdtool words.
+CHAIN = "--object-median 7 --gaussian 3"
 #: Seconds a cluster gets to come up before the test fails.
 CLUSTER_START_TIMEOUT = 60
 
@@ -32,6 +34,11 @@ def render_sequence(directory, frames, res="64x64", spp=4, scene="cornell"):
                         "--threads", "1", "-q", "-o", str(directory / f"shot.{frame:04d}.exr")], check=True,
                        timeout=300)
     return directory / "shot.####.exr"
+
+
+def frame_file(pattern, frame):
+    """The file of `frame` in a 'NAME.####.EXT' pattern."""
+    return str(pattern).replace("####", f"{frame:04d}")
 
 
 def read_pixels(path):

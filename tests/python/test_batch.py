@@ -9,13 +9,8 @@ import pytest
 
 import mcdenoise
 from mcdenoise.batch import denoise_sequence
-from conftest import assert_same_file_contents, mcdtool, read_pixels
+from conftest import CHAIN, assert_same_file_contents, frame_file, mcdtool, read_pixels
 
-CHAIN = "--object-median 7 --gaussian 3"
-
-
-def frame_file(pattern, frame):
-    return str(pattern).replace("####", f"{frame:04d}")
 
 
 def batch_cli(*args, cwd=None):

@@ -2,7 +2,6 @@
 docs; numpy and ImageBuf calls give exactly what mcdtool (the C++ library
 through the driver) writes; errors raise with the library's message; the GIL
 is released while filtering."""
-import inspect
 import re
 import threading
 import time
@@ -13,7 +12,7 @@ import OpenImageIO as oiio
 import pytest
 
 import mcdenoise
-from conftest import mcdtool, random_image, read_pixels
+from conftest import frame_file, mcdtool, random_image, read_pixels
 
 HEADERS = Path(__file__).resolve().parents[2] / "imageops" / "include" / "mcdenoise"
 
@@ -95,7 +94,7 @@ def test_numpy_and_imagebuf_equal_mcdtool(sequence, tmp_path, command):
     """Each filter through numpy and through ImageBuf gives bit for bit the
     beauty mcdtool writes for the same command on a testrender frame."""
     name, guide_channels, params = CASES[command]
-    frame = Path(str(sequence).replace("####", "0001"))
+    frame = frame_file(sequence, 1)
     out = tmp_path / "out.exr"
     r = mcdtool(frame, *command.split(), "-d", "float", "-o", out)
     assert r.returncode == 0, r.stderr
@@ -120,7 +119,7 @@ def test_feature_guided_filters_take_a_guides_dict(sequence):
     """cross_bilateral, atrous, nlmeans, clamp_fireflies and denoise take
     the library's Guides fields as a dict; numpy and ImageBuf agree, the
     guides change the result, and FeatureSigmas is the library's struct."""
-    pixels, spec = read_pixels(Path(str(sequence).replace("####", "0002")))
+    pixels, spec = read_pixels(frame_file(sequence, 2))
     beauty = channels(pixels, spec, ["R", "G", "B"])
     guides = {"object_id": channels(pixels, spec, ["id"]), "normal": channels(pixels, spec, ["N.X", "N.Y", "N.Z"]),
               "depth": channels(pixels, spec, ["Z"]), "albedo": channels(pixels, spec, ["albedo.R", "albedo.G", "albedo.B"]),

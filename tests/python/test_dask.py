@@ -10,16 +10,11 @@ import threading
 import time
 
 from mcdenoise.batch import denoise_sequence
-from conftest import assert_same_file_contents, mcdtool, render_sequence
+from conftest import CHAIN, assert_same_file_contents, frame_file, mcdtool, render_sequence
 
-CHAIN = "--object-median 7 --gaussian 3"
 #: A chain slow enough (about half a second a frame on one thread at
 #: 160x160) that a worker can be killed while it holds a frame.
 SLOW_CHAIN = "--median 11 --gaussian 5 --threads 1"
-
-
-def frame_file(pattern, frame):
-    return str(pattern).replace("####", f"{frame:04d}")
 
 
 def test_dask_cluster_equals_local_pool(sequence, dask_cluster, tmp_path):
