@@ -16,5 +16,4 @@ raises mcdenoise.UsageError.
 Frame-sequence batch denoise (local process pool or Dask) is in
 mcdenoise.batch; see docs/python.md.
 """
-from ._mcdenoise import *  # noqa: F401,F403 (the bound library is the package's API)
-from ._mcdenoise import Error, UsageError, ImageComparison, frame_list, frame_path  # noqa: F401
+from ._mcdenoise import *  # noqa: F401,F403 (the bound library, mcdenoise.Error, UsageError, ... is the API)
