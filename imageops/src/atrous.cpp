@@ -114,6 +114,7 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
         next.variance.resize(size_t(width) * out_region.height());
     }
     parallel_rows(out_region, nthreads, [&](int y) {
+        const FlushDenormals flush;
         for_each_segment(out_region.xbegin, out_region.xend, [&](int x0, int n) {
             const int c0 = result ? result->roi.chbegin : 0;
             const int c1 = result ? result->roi.chend : nch;

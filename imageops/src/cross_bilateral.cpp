@@ -69,6 +69,7 @@ bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
     const float colour_scale  = by_color ? float(1.0 / (2.0 * double(sigma_color) * sigma_color))
                                          : 0.0f;
     parallel_rows(roi, nthreads, [&](int y) {
+        const FlushDenormals flush;
         for_each_segment(roi.xbegin, roi.xend, [&](int x0, int n) {
             WeightedSums sums(0, src.nchannels(), n, src.masked());
             const size_t len = static_cast<size_t>(n);

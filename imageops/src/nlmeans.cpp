@@ -182,6 +182,7 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
     const NlmInputs in { colour, variance, features, values, roi, dw,
                          search_radius, patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+        const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
                 nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, result);

@@ -7,8 +7,6 @@
 #include <OpenImageIO/fmath.h>
 #include <OpenImageIO/simd.h>
 
-#include <algorithm>
-
 #include <cmath>
 
 namespace mcdenoise {
@@ -103,16 +101,22 @@ int64_t WeightedSums::write_planes(float* const* out) const
 
 void weights_from_exponents(const float* e, float scale, int n, float* w)
 {
-    // Eight lanes at a time, the tail through the same lanes, so a pixel's
-    // weight never depends on where its run starts.
+    // Eight lanes at a time, the tail through the same lane-wise arithmetic
+    // (only loaded and stored in part), so a pixel's weight never depends on
+    // where its run starts.
     using OIIO::simd::vfloat8;
     const vfloat8 limit(max_weight_exponent), s(scale), zero(0.0f);
-    for (int i = 0; i < n; i += vfloat8::elements) {
-        const int m = std::min(n - i, int(vfloat8::elements));
+    const auto weight = [&](const vfloat8& x) {
+        return OIIO::simd::select(x < limit, s * OIIO::fast_exp(-x), zero);
+    };
+    constexpr int lanes = vfloat8::elements;
+    int i = 0;
+    for (; i + lanes <= n; i += lanes)
+        weight(vfloat8(e + i)).store(w + i);
+    if (i < n) {
         vfloat8 x;
-        x.load(e + i, m);
-        const vfloat8 v = OIIO::simd::select(x < limit, s * OIIO::fast_exp(-x), zero);
-        v.store(w + i, m);
+        x.load(e + i, n - i);
+        weight(x).store(w + i, n - i);
     }
 }
 

@@ -6,6 +6,10 @@
 
 #include "pixel_block.h"
 
+#if defined(__SSE__)
+#    include <xmmintrin.h>
+#endif
+
 #include <cstdint>
 #include <vector>
 
@@ -60,6 +64,26 @@ private:
     bool m_masked;
     std::vector<float> m_num;  // channel-major, m_n per channel
     std::vector<float> m_den;  // per channel when masked, else one run
+};
+
+/// While alive, the calling thread flushes denormal floats to zero (FTZ and
+/// DAZ): far neighbours' weights, and their squares, fall below float's
+/// normal range, and arithmetic on denormals is ~100 times slower. Every
+/// worker of a filter sets it, so results stay the same on any thread.
+class FlushDenormals {
+public:
+#if defined(__SSE__)
+    FlushDenormals()
+        : m_saved(_mm_getcsr())
+    {
+        _mm_setcsr(m_saved | flush_bits);
+    }
+    ~FlushDenormals() { _mm_setcsr(m_saved); }
+
+private:
+    static constexpr unsigned flush_bits = 0x8040;  // FTZ | DAZ
+    unsigned m_saved;
+#endif
 };
 
 /// Columns filtered together: a run short enough that the rows every tap
