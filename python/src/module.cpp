@@ -47,14 +47,17 @@ void bind_feature_sigmas(py::module_& m)
     py::class_<FeatureSigmas>(m, "FeatureSigmas",
                               "How fast a neighbour's weight falls with each feature difference "
                               "(see features.h); a sigma <= 0 leaves that feature out.")
-        .def(py::init([](float albedo, float normal, float depth) { return FeatureSigmas{ albedo, normal, depth }; }),
+        .def(py::init([](float albedo, float normal, float depth) {
+                 return FeatureSigmas{ albedo, normal, depth };
+             }),
              py::arg("albedo") = defaults.albedo, py::arg("normal") = defaults.normal,
              py::arg("depth") = defaults.depth)
         .def_readwrite("albedo", &FeatureSigmas::albedo)
         .def_readwrite("normal", &FeatureSigmas::normal)
         .def_readwrite("depth", &FeatureSigmas::depth)
         .def("__repr__", [](const FeatureSigmas& s) {
-            return py::str("FeatureSigmas(albedo={:.7g}, normal={:.7g}, depth={:.7g})").format(s.albedo, s.normal, s.depth);
+            return py::str("FeatureSigmas(albedo={:.7g}, normal={:.7g}, depth={:.7g})")
+                .format(s.albedo, s.normal, s.depth);
         });
 }
 

@@ -1,9 +1,9 @@
 // operation.h: binding one library operation from its value form. Every
-// `const ImageBuf&` argument becomes an ImageArg (ImageBuf or numpy array),
-// `const Guides&` a dict of them (GuidesArg),
-// `roi` and `nthreads` are appended with the library's defaults, the GIL is
-// released while the library runs, and an image result with an error raises
-// mcdenoise.Error carrying the library's message.
+// `const ImageBuf&` argument becomes an ImageArg (ImageBuf or numpy array)
+// and `const Guides&` a dict of them (GuidesArg); `roi` and `nthreads` are
+// appended with the library's defaults; the GIL is released while the
+// library runs; a result with an error raises mcdenoise.Error carrying the
+// library's message.
 #pragma once
 
 #include "guides_arg.h"
@@ -86,7 +86,8 @@ void def_operation(py::module_& module, const char* name, R (*function)(const Im
             }();
             return to_python(std::move(result), first);
         },
-        library_doc(name), std::forward<PyArgs>(args)..., py::arg_v("roi", ROI(), "ROI.All"), py::arg("nthreads") = 0);
+        library_doc(name), std::forward<PyArgs>(args)..., py::arg_v("roi", ROI(), "ROI.All"),
+        py::arg("nthreads") = 0);
 }
 
 }  // namespace mcdpy
