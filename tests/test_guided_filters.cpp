@@ -1,7 +1,8 @@
 // test_guided_filters.cpp: the object, BRDF and normal filters against the
 // tests' brute-force implementation of SPEC.md's rules, on random beauty with
 // structured guides stored in several pixel types, with non-finite values,
-// odd data windows and across threads; and their error checks.
+// odd data windows; and their error checks (thread counts and ROI splits:
+// test_determinism.cpp).
 #include <mcdenoise/mcdenoise.h>
 
 #include "reference/spec_reference.h"
@@ -215,25 +216,6 @@ TEST_P(GuidedFilters, GuidesWithLargerDataWindowsGiveTheSameResult)
     ASSERT_TRUE(GetParam().run(b, beauty, cropped, 5, {}, 0)) << b.geterror();
     EXPECT_TRUE(testimg::bit_identical(a, b));
     expect_matches_spec(GetParam(), beauty, cropped, 5);
-}
-
-TEST_P(GuidedFilters, BitIdenticalForOneTwoAndSevenThreadsAndAnySplit)
-{
-    ImageBuf beauty = testimg::random_image(150, 130, 3, 12, 0.0f, 20.0f);
-    testimg::sprinkle_nonfinite(beauty, 0.002, 13);
-    const Guides g = make_guides(150, 130, 14);
-    ImageBuf one, two, seven;
-    ASSERT_TRUE(GetParam().run(one, beauty, g, 7, {}, 1));
-    ASSERT_TRUE(GetParam().run(two, beauty, g, 7, {}, 2));
-    ASSERT_TRUE(GetParam().run(seven, beauty, g, 7, {}, 7));
-    EXPECT_TRUE(testimg::bit_identical(one, two));
-    EXPECT_TRUE(testimg::bit_identical(one, seven));
-    for (ROI part : { ROI(0, 150, 0, 61, 0, 1, 0, 3), ROI(0, 150, 61, 130, 0, 1, 0, 3),
-                      ROI(0, 77, 0, 130, 0, 1, 0, 3), ROI(77, 150, 0, 130, 0, 1, 0, 3) }) {
-        ImageBuf piece;
-        ASSERT_TRUE(GetParam().run(piece, beauty, g, 7, part, 1));
-        EXPECT_EQ(testimg::pixels(piece, part), testimg::pixels(one, part));
-    }
 }
 
 TEST_P(GuidedFilters, RejectsBadGuidesAndLeavesDstAlone)

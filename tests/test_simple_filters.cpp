@@ -1,6 +1,7 @@
 // test_simple_filters.cpp: mean, median and gaussian against the tests'
 // brute-force implementation of SPEC.md, on random images of many shapes,
-// pixel types and data windows, with non-finite values, and across threads.
+// pixel types and data windows, with non-finite values (thread counts and
+// ROI splits: test_determinism.cpp).
 #include <mcdenoise/mcdenoise.h>
 
 #include "reference/spec_reference.h"
@@ -144,37 +145,6 @@ TEST_P(SimpleFilters, WindowsWithNoFiniteValueGiveZeroAndAreCounted)
     for (float v : testimg::pixels(dst))
         ASSERT_EQ(v, 0.0f);
     EXPECT_EQ(dst.spec().get_int_attribute("mcdenoise:empty_windows"), 30 * 20);
-}
-
-TEST_P(SimpleFilters, BitIdenticalForOneTwoAndSevenThreads)
-{
-    ImageBuf img = testimg::random_image(203, 141, 3, 13, 0.0f, 50.0f);
-    testimg::sprinkle_nonfinite(img, 0.002, 14);
-    for (int size : { 3, 7, 31 }) {
-        ImageBuf one, two, seven;
-        ASSERT_TRUE(GetParam().run(one, img, size, {}, 1));
-        ASSERT_TRUE(GetParam().run(two, img, size, {}, 2));
-        ASSERT_TRUE(GetParam().run(seven, img, size, {}, 7));
-        EXPECT_TRUE(testimg::bit_identical(one, two)) << "size " << size;
-        EXPECT_TRUE(testimg::bit_identical(one, seven)) << "size " << size;
-    }
-}
-
-TEST_P(SimpleFilters, AnyRoiSplitGivesTheSamePixels)
-{
-    const ImageBuf img = testimg::random_image(150, 140, 3, 15, 0.0f, 1000.0f);
-    ImageBuf whole;
-    ASSERT_TRUE(GetParam().run(whole, img, 9, {}, 1));
-    for (int split : { 1, 37, 64, 65, 139 }) {
-        const ROI top(0, 150, 0, split, 0, 1, 0, 3), bottom(0, 150, split, 140, 0, 1, 0, 3);
-        const ROI left(0, split, 0, 140, 0, 1, 0, 3), right(split, 150, 0, 140, 0, 1, 0, 3);
-        for (ROI part : { top, bottom, left, right }) {
-            ImageBuf piece;
-            ASSERT_TRUE(GetParam().run(piece, img, 9, part, 1));
-            EXPECT_EQ(testimg::pixels(piece, part), testimg::pixels(whole, part))
-                << "split " << split;
-        }
-    }
 }
 
 TEST_P(SimpleFilters, InPlaceEqualsOutOfPlace)

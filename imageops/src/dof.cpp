@@ -45,8 +45,9 @@ bool check_levels(const char* op, ImageBuf& dst, int levels, int focus_level)
     return true;
 }
 
-// The smallest and largest finite depths of the whole depth image, so that
-// a pixel's level never depends on the ROI.
+// The smallest and largest finite depths of the plane (the depth over the
+// image's data window), so that a pixel's level depends neither on the ROI
+// nor on how far the depth guide's data window reaches past the image.
 std::pair<double, double> depth_range(const GuidePlane<float>& all)
 {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -58,14 +59,17 @@ std::pair<double, double> depth_range(const GuidePlane<float>& all)
     return { lo, hi };
 }
 
+// `image` is the data window whose depths set the range: the beauty's for
+// dof, the depth's own for dof_focus_map.
 bool focus_map(const char* op, ImageBuf& dst, const ImageBuf& depth, int levels,
                int focus_level, float depth_near, float depth_far, const ROI& roi,
-               int nthreads, FocusMap& map)
+               const ROI& image, int nthreads, FocusMap& map)
 {
     GuidePlane<float> all;
     if (!check_levels(op, dst, levels, focus_level)
         || !check_guide(op, "depth", dst, depth, 1, roi)
-        || !load_depths(op, dst, depth, depth.roi(), nthreads, all))
+        || !load_depths(op, dst, depth, OIIO::roi_intersection(image, depth.roi()), nthreads,
+                        all))
         return false;
     const bool explicit_range = depth_far > depth_near;
     auto [lo, hi] = explicit_range ? std::make_pair(double(depth_near), double(depth_far))
@@ -101,8 +105,8 @@ bool dof_focus_map(ImageBuf& dst, const ImageBuf& depth, int levels, int focus_l
         return false;
     roi.chbegin = 0;
     roi.chend   = 1;
-    if (!focus_map(op, dst, depth, levels, focus_level, depth_near, depth_far, roi, nthreads,
-                   map)
+    if (!focus_map(op, dst, depth, levels, focus_level, depth_near, depth_far, roi,
+                   depth.roi(), nthreads, map)
         || !begin_result(op, dst, depth, { &depth }, roi, result))
         return false;
     for (int y = roi.ybegin; y < roi.yend; ++y)
@@ -129,7 +133,7 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     IdPlane ids;
     if (!resolve_roi(op, dst, beauty, roi)
         || !focus_map(op, dst, depth, levels, focus_level, depth_near, depth_far, roi,
-                      nthreads, map)
+                      beauty.roi(), nthreads, map)
         || !load_window_ids(op, dst, beauty, object_id, roi, map.largest, nthreads, ids))
         return false;
 

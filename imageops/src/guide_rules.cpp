@@ -43,8 +43,11 @@ bool load_window_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& 
                      const OIIO::ImageBuf& object_id, const OIIO::ROI& roi, int size,
                      int nthreads, IdPlane& ids)
 {
+    // One pixel past the windows' reach: key edges at the windows' borders
+    // then see the same neighbours whatever the ROI, so which windows take
+    // the fast path (and so the rounding) never depends on the ROI split.
     return check_guide(op, "object_id", dst, object_id, 1, roi)
-           && load_object_ids(op, dst, object_id, grow_and_clip(roi, size / 2, beauty.roi()),
+           && load_object_ids(op, dst, object_id, grow_and_clip(roi, size / 2 + 1, beauty.roi()),
                               nthreads, ids);
 }
 

@@ -41,7 +41,7 @@ KeyEdges key_edges(const OIIO::ROI& region, int nthreads, Same&& same);
 UniformMap uniform_map(const KeyEdges& edges, const OIIO::ROI& roi, int r, int nthreads);
 
 /// Read a guide's object ids over what a window of side `size` reaches from
-/// `roi`, after checking the guide.
+/// `roi` and one pixel more, after checking the guide.
 bool load_window_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
                      const OIIO::ImageBuf& object_id, const OIIO::ROI& roi, int size,
                      int nthreads, IdPlane& ids);

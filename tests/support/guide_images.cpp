@@ -1,6 +1,8 @@
 // guide_images.cpp: building structured guide images for tests.
 #include "guide_images.h"
 
+#include "test_images.h"
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -73,6 +75,29 @@ ImageBuf wavy_normals(int width, int height, uint32_t seed, int x0, int y0)
                 n[0] = n[1] = n[2] = 0.0f;
         }
     return from_values(width, height, 3, OIIO::TypeDesc::FLOAT, x0, y0, v);
+}
+
+testfilters::GuideSet guide_set(int width, int height, uint32_t seed, int x0, int y0)
+{
+    std::mt19937 rng(seed);
+    std::vector<float> depth(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float& d = depth[size_t(y) * width + x];
+            d = 1.0f + 0.25f * float(x + y % 7);
+            if (rng() % 17 == 0)
+                d = 1e10f;
+            else if (rng() % 29 == 0)
+                d = std::nanf("");
+        }
+    testfilters::GuideSet g;
+    g.object_id  = block_ids(width, height, seed, OIIO::TypeDesc::FLOAT, x0, y0);
+    g.reflect_id = block_reflect_ids(width, height, seed + 1, x0, y0);
+    g.normal     = wavy_normals(width, height, seed + 2, x0, y0);
+    g.depth      = from_values(width, height, 1, OIIO::TypeDesc::FLOAT, x0, y0, depth);
+    g.albedo     = random_image(width, height, 3, seed + 3, 0.0f, 1.5f, OIIO::TypeDesc::FLOAT, x0, y0);
+    g.variance   = random_image(width, height, 3, seed + 4, 0.0f, 0.1f, OIIO::TypeDesc::FLOAT, x0, y0);
+    return g;
 }
 
 }  // namespace testimg

@@ -3,6 +3,8 @@
 // smooth normals with missing ones, and depth ramps.
 #pragma once
 
+#include "support/filter_table.h"
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstdint>
@@ -23,5 +25,10 @@ OIIO::ImageBuf block_reflect_ids(int width, int height, uint32_t seed, int x0 = 
 /// Three-channel normals varying smoothly, not unit length, with some
 /// zero-length ("no normal") pixels and flat patches of one normal.
 OIIO::ImageBuf wavy_normals(int width, int height, uint32_t seed, int x0 = 0, int y0 = 0);
+
+/// Every guide a filter of the table may read, over `width` x `height` at
+/// origin (x0, y0): block ids and reflect ids, wavy normals, a depth ramp
+/// with "infinitely far" (1e10) and NaN pixels, random albedo and variance.
+testfilters::GuideSet guide_set(int width, int height, uint32_t seed, int x0 = 0, int y0 = 0);
 
 }  // namespace testimg

@@ -1,0 +1,116 @@
+// filter_table.cpp: the rows of the filter table, one library call each.
+#include "filter_table.h"
+
+#include <mcdenoise/mcdenoise.h>
+
+namespace testfilters {
+
+namespace {
+
+/// The feature filters' view of `g`: every guide that is there.
+mcdenoise::Guides features(const GuideSet& g)
+{
+    auto present = [](const ImageBuf& img) { return img.initialized() ? &img : nullptr; };
+    mcdenoise::Guides f;
+    f.object_id = present(g.object_id);
+    f.normal    = present(g.normal);
+    f.depth     = present(g.depth);
+    f.albedo    = present(g.albedo);
+    f.variance  = present(g.variance);
+    return f;
+}
+
+/// The guides the feature filters read.
+constexpr unsigned feature_guides = needs_id | needs_normal | needs_depth | needs_albedo | needs_variance;
+
+}  // namespace
+
+const std::vector<FilterRow>& filter_table()
+{
+    static const std::vector<FilterRow> table = {
+        { "mean", 0,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet&, int s, ROI r, int n) {
+              return mcdenoise::mean(d, b, s, r, n);
+          } },
+        { "median", 0,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet&, int s, ROI r, int n) {
+              return mcdenoise::median(d, b, s, r, n);
+          } },
+        { "gaussian", 0,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet&, int s, ROI r, int n) {
+              return mcdenoise::gaussian(d, b, s, r, n);
+          } },
+        { "object_mean", needs_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::object_mean(d, b, g.object_id, s, r, n);
+          } },
+        { "object_median", needs_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::object_median(d, b, g.object_id, s, r, n);
+          } },
+        { "object_gaussian", needs_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::object_gaussian(d, b, g.object_id, s, r, n);
+          } },
+        { "brdf_mean", needs_id | needs_reflect_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::brdf_mean(d, b, g.object_id, g.reflect_id, s, r, n);
+          } },
+        { "brdf_gaussian", needs_id | needs_reflect_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::brdf_gaussian(d, b, g.object_id, g.reflect_id, s, r, n);
+          } },
+        { "brdf_median", needs_id | needs_reflect_id,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::brdf_median(d, b, g.object_id, g.reflect_id, s, r, n);
+          } },
+        { "normal_mean", needs_id | needs_normal,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::normal_mean(d, b, g.object_id, g.normal, s, r, n);
+          } },
+        { "normal_gaussian", needs_id | needs_normal,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::normal_gaussian(d, b, g.object_id, g.normal, s, r, n);
+          } },
+        { "dof", needs_id | needs_depth,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::dof(d, b, g.object_id, g.depth, s, s / 2, 0.0f, 0.0f, r, n);
+          } },
+        { "cross_bilateral", feature_guides,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::cross_bilateral(d, b, features(g), s, 2.0f, 0.0f, {}, r, n);
+          } },
+        { "atrous", feature_guides,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::atrous(d, b, features(g), s / 2, 4.0f, {}, r, n);
+          } },
+        { "nlmeans", feature_guides,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::nlmeans(d, b, features(g), s / 2, 1, 0.45f, {}, r, n);
+          } },
+        { "clamp_fireflies", feature_guides,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
+              return mcdenoise::clamp_fireflies(d, b, features(g), 2.0f, s / 2, r, n);
+          } },
+        { "demodulate", needs_albedo,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
+              return mcdenoise::demodulate(d, b, g.albedo, 0.01f, r, n);
+          } },
+        { "remodulate", needs_albedo,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
+              return mcdenoise::remodulate(d, b, g.albedo, 0.01f, r, n);
+          } },
+        { "denoise", feature_guides,
+          [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
+              return mcdenoise::denoise(d, b, features(g), r, n);
+          } },
+    };
+    return table;
+}
+
+int guide_channels(GuideBit guide)
+{
+    return guide == needs_normal || guide == needs_albedo || guide == needs_variance ? 3 : 1;
+}
+
+}  // namespace testfilters

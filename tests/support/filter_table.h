@@ -1,0 +1,52 @@
+// filter_table.h: every library filter as one row (its name, the guides it
+// reads, and one call with the common parameters), for the tests and fuzz
+// targets that run them all: determinism across threads and ROI splits,
+// hostile input. A new filter is one more row in filter_table.cpp.
+#pragma once
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <vector>
+
+namespace testfilters {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+/// The guide images a filter may read, by role (SPEC.md's argument order).
+struct GuideSet {
+    ImageBuf object_id, reflect_id, normal, depth, albedo, variance;
+};
+
+/// Which guides a row reads (bit flags), so callers build only those.
+enum GuideBit : unsigned {
+    needs_id = 1u << 0,
+    needs_reflect_id = 1u << 1,
+    needs_normal = 1u << 2,
+    needs_depth = 1u << 3,
+    needs_albedo = 1u << 4,
+    needs_variance = 1u << 5,
+};
+
+/// A filter's bool form with the shared parameters: `size` is the window
+/// side; for `dof` the level count (focus at the middle level, so its
+/// widest window is `size` too); for `atrous` twice the iteration count,
+/// for `nlmeans` and `clamp_fireflies` twice the (search) radius; unused by
+/// `demodulate`, `remodulate` and `denoise`.
+using RunFilter = bool (*)(ImageBuf& dst, const ImageBuf& beauty, const GuideSet& guides, int size, ROI roi,
+                           int nthreads);
+
+/// One filter.
+struct FilterRow {
+    const char* name;
+    unsigned guides;  ///< GuideBit flags
+    RunFilter run;
+};
+
+/// Every filter of the library, in header order.
+const std::vector<FilterRow>& filter_table();
+
+/// The channel count the library expects for each guide role.
+int guide_channels(GuideBit guide);
+
+}  // namespace testfilters
