@@ -11,6 +11,7 @@
 #include "window.h"
 
 #include <OpenImageIO/imagebufalgo_util.h>
+#include <OpenImageIO/simd.h>
 
 namespace mcdenoise {
 
@@ -35,6 +36,45 @@ struct NlmInputs {
     int r, f;
     float k2;  // strength^2
 };
+
+// One row of colour and variance planes at p and at q = p + o, per channel.
+struct DistanceRows {
+    const float* u_p[feature_colour_channels];
+    const float* u_q[feature_colour_channels];
+    const float* v_p[feature_colour_channels];
+    const float* v_q[feature_colour_channels];
+};
+
+// d[i] = the mean over the NC colour channels of the variance-normalised
+// distance of pixel i of the p rows and pixel i of the q rows (Rousselle et
+// al. 2012, eq. 9), all channels in one pass, eight lanes at a time (the
+// tail through the same lane-wise arithmetic, loaded and stored in part).
+template<int NC>
+void distance_row(const DistanceRows& rows, float k2, float channel_mean, int m, float* d)
+{
+    using OIIO::simd::vfloat8;
+    constexpr int lanes = vfloat8::elements;
+    const vfloat8 guard(distance_guard), k(k2), mean(channel_mean);
+    // The distances of eight pixels, their rows read by `load`.
+    const auto distances = [&](auto&& load) {
+        vfloat8 sum(0.0f);
+        for (int c = 0; c < NC; ++c) {
+            const vfloat8 a = load(rows.v_p[c]), b = load(rows.v_q[c]);
+            const vfloat8 t = load(rows.u_p[c]) - load(rows.u_q[c]);
+            sum = sum + (t * t - (a + OIIO::simd::min(a, b))) / (guard + k * (a + b));
+        }
+        return sum * mean;
+    };
+    int i = 0;
+    for (; i + lanes <= m; i += lanes)
+        distances([&](const float* row) { return vfloat8(row + i); }).store(d + i);
+    if (i < m)
+        distances([&](const float* row) {
+            vfloat8 v;
+            v.load(row + i, m - i);
+            return v;
+        }).store(d + i, m - i);
+}
 
 // Number of n in [-f, f] with both p + n and p + d + n in [lo, hi).
 inline int patch_count(int p, int d, int f, int lo, int hi)
@@ -78,19 +118,19 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                                   + size_t(xa - in.variance.region.xbegin);
                 const size_t sq = size_t(yy + dy - in.variance.region.ybegin) * vw
                                   + size_t(xa + dx - in.variance.region.xbegin);
+                DistanceRows rows;
                 for (int c = 0; c < nc; ++c) {
-                    const float* u_p = in.colour.colour[size_t(c)].data() + up;
-                    const float* u_q = in.colour.colour[size_t(c)].data() + uq;
-                    const float* v_p = in.variance.colour[size_t(c)].data() + sp;
-                    const float* v_q = in.variance.colour[size_t(c)].data() + sq;
-                    for (int i = 0; i < m; ++i) {
-                        const float t = u_p[i] - u_q[i];
-                        d[i] += (t * t - (v_p[i] + std::min(v_p[i], v_q[i])))
-                                / (distance_guard + in.k2 * (v_p[i] + v_q[i]));
-                    }
+                    rows.u_p[c] = in.colour.colour[size_t(c)].data() + up;
+                    rows.u_q[c] = in.colour.colour[size_t(c)].data() + uq;
+                    rows.v_p[c] = in.variance.colour[size_t(c)].data() + sp;
+                    rows.v_q[c] = in.variance.colour[size_t(c)].data() + sq;
                 }
-                for (int i = 0; i < m; ++i)
-                    d[i] *= channel_mean;
+                if (nc == 3)
+                    distance_row<3>(rows, in.k2, channel_mean, m, d);
+                else if (nc == 2)
+                    distance_row<2>(rows, in.k2, channel_mean, m, d);
+                else
+                    distance_row<1>(rows, in.k2, channel_mean, m, d);
             }
             for (int y = y0; y < y1; ++y) {
                 if (y + dy < dw.ybegin || y + dy >= dw.yend)
