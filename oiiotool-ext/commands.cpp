@@ -40,7 +40,7 @@ const std::vector<Role> feature_roles = { Role::id, Role::normal, Role::depth, R
 const std::vector<Role> feature_and_variance_roles = { Role::id, Role::normal, Role::depth, Role::albedo,
                                                        Role::variance };
 /// Every guide `denoise` can use.
-const std::vector<Role> denoise_roles = { Role::id,       Role::normal, Role::depth, Role::albedo,
+const std::vector<Role> denoise_roles = { Role::normal, Role::depth,  Role::albedo,
                                           Role::variance, Role::half_a, Role::half_b };
 
 /// The present guides of `call` in the library's form.

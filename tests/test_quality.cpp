@@ -1,7 +1,7 @@
 // test_quality.cpp: the report's filters against testrender ground truth
 // (the cached reference set, CTest fixture `refset`): what the report claims,
 // checked in relMSE with thresholds set from the measured numbers recorded in
-// docs/quality.md, including where the claims do not hold on our scenes.
+// docs/quality_refset.md, including where the claims do not hold on our scenes.
 #include <mcdenoise/mcdenoise.h>
 
 #include "support/render_file.h"
@@ -166,8 +166,8 @@ TEST_P(DenoiseOn, BeautyAloneBeatsGaussian7)
 }
 
 // 16x fewer samples for the same error. Measured denoise / raw 256 spp:
-// cornell 0.68, mirrors 0.91, interior 0.49. Not reached on textured (7.3x)
-// and dof (2.3x), where denoise is 0.55 and 0.17 of the raw 16 spp error:
+// cornell 0.58, mirrors 0.90, interior 0.46. Not reached on textured (7.3x)
+// and dof (2.2x), where denoise is 0.55 and 0.16 of the raw 16 spp error:
 // there sub-pixel texture and defocus leave a bias the features cannot
 // explain (docs/quality.md).
 TEST_P(DenoiseOn, BeatsRaw256SppOnSmoothlyLitScenes)

@@ -10,7 +10,9 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace mcdenoise {
 
@@ -42,6 +44,46 @@ bool variance_from_halves(ImageBuf& dst, const Guides& guides, const ROI& region
     return true;
 }
 
+/// The variance when neither the variance guide nor the halves are given:
+/// per colour channel, the smallest 3x3 sample variance among the 3x3
+/// windows around the pixel, over `region` (the data window of `clamped`).
+/// A window across an edge counts the edge as noise; the smallest window
+/// nearby lies on one side of it.
+bool estimated_variance(ImageBuf& dst, const ImageBuf& clamped, const ROI& region, int nthreads,
+                        ImageBuf& variance)
+{
+    PixelBlock block;
+    VarianceField sample;
+    ROI colour_roi  = region;
+    colour_roi.chend = colour_channels(clamped.nchannels());
+    if (!read_beauty(op_name, dst, clamped, colour_roi, block))
+        return false;
+    const ColourField colour = colour_field(block, colour_roi, nthreads);
+    if (!load_variance(op_name, dst, nullptr, colour, colour_roi, region, nthreads, sample))
+        return false;
+    const int nc = colour.nchannels();
+    variance.reset(OIIO::ImageSpec(colour_roi, OIIO::TypeDesc::FLOAT));
+    const size_t w = size_t(region.width());
+    parallel_rows(region, nthreads, [&](int y) {
+        const Span ys = clip_window(y, 1, region.ybegin, region.yend);
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const Span xs = clip_window(x, 1, region.xbegin, region.xend);
+            float* out    = static_cast<float*>(variance.pixeladdr(x, y));
+            for (int c = 0; c < nc; ++c) {
+                const std::vector<float>& plane = sample.colour[size_t(c)];
+                float smallest = plane[size_t(ys.begin - region.ybegin) * w
+                                       + size_t(xs.begin - region.xbegin)];
+                for (int qy = ys.begin; qy < ys.end; ++qy)
+                    for (int qx = xs.begin; qx < xs.end; ++qx)
+                        smallest = std::min(smallest, plane[size_t(qy - region.ybegin) * w
+                                                            + size_t(qx - region.xbegin)]);
+                out[c] = smallest;
+            }
+        }
+    });
+    return true;
+}
+
 /// Check the halves: both or neither, each with the beauty's colour
 /// channels, covering `roi`.
 bool check_halves(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, const ROI& roi)
@@ -58,12 +100,12 @@ bool check_halves(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, c
            && check_guide(op_name, "half_b", dst, *guides.half_b, nc, roi);
 }
 
-/// The names of the guides present, comma separated.
+/// The names of the guides `denoise` reads, comma separated.
 std::string guide_names(const Guides& guides)
 {
     std::string names;
     const std::pair<const ImageBuf*, const char*> all[] = {
-        { guides.object_id, "object_id" }, { guides.normal, "normal" },
+        { guides.normal, "normal" },
         { guides.depth, "depth" },         { guides.albedo, "albedo" },
         { guides.variance, "variance" },   { guides.half_a, "half_a" },
         { guides.half_b, "half_b" }
@@ -78,30 +120,33 @@ std::string guide_names(const Guides& guides)
 
 bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
 {
-    if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, guides, roi)
+    Guides used    = guides;  // the object id is not read (see denoise.h)
+    used.object_id = nullptr;
+    if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, used, roi)
         || !check_halves(dst, beauty, guides, roi))
         return false;
-    // Everything the nlmeans windows and patches (and an estimated
-    // variance's 3x3 window) read, so the result does not depend on the ROI.
-    ROI region    = grow_and_clip(roi, search_radius + patch_radius + 1, beauty.roi());
+    // Everything the nlmeans windows and patches read, and the two 3x3
+    // windows of an estimated variance, so the result does not depend on
+    // the ROI.
+    ROI region    = grow_and_clip(roi, search_radius + patch_radius + 2, beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
-    ImageBuf clamped, halves_variance;
-    Guides used = guides;
-    if (!clamp_fireflies(clamped, beauty, guides, firefly_factor, firefly_radius, region,
+    ImageBuf clamped, variance;
+    if (!clamp_fireflies(clamped, beauty, used, firefly_factor, firefly_radius, region,
                          nthreads)) {
         dst.errorfmt("{}: {}", op_name, clamped.geterror());
         return false;
     }
-    if (!guides.variance && guides.half_a) {
-        ROI colour    = region;
-        colour.chend  = colour_channels(beauty.nchannels());
-        if (!variance_from_halves(dst, guides, colour, nthreads, halves_variance))
+    ROI colour   = region;
+    colour.chend = colour_channels(beauty.nchannels());
+    const bool measured = guides.variance || guides.half_a;
+    if (!guides.variance) {
+        if (guides.half_a ? !variance_from_halves(dst, guides, colour, nthreads, variance)
+                          : !estimated_variance(dst, clamped, region, nthreads, variance))
             return false;
-        used.variance = &halves_variance;
+        used.variance = &variance;
     }
-    const float strength = used.variance ? denoise_measured_strength
-                                         : denoise_estimated_strength;
+    const float strength = measured ? denoise_measured_strength : denoise_estimated_strength;
     if (!nlmeans(dst, clamped, used, search_radius, patch_radius, strength,
                  denoise_feature_sigmas, roi, nthreads))
         return false;

@@ -10,33 +10,34 @@ namespace mcdenoise {
 /// project's best non-learned result in one call.
 ///
 /// The steps, each a filter of this library:
-/// 1. `clamp_fireflies` (factor 2, radius 2, within objects when
-///    `object_id` is given): the few very bright samples that dominate the
-///    error are scaled down before anything is averaged.
+/// 1. `clamp_fireflies` (factor 2, radius 2): the few very bright samples
+///    that dominate the error are scaled down before anything is averaged.
 /// 2. `nlmeans` (search radius 5, patch radius 1) on the clamped beauty, with
 ///    variance-normalised patch distances (Rousselle, Knaus & Zwicker 2012)
 ///    and feature weights (Rousselle, Manzi & Zwicker 2013) with fall-offs
 ///    `denoise_feature_sigmas`.
 ///
-/// What each guide buys (docs/quality.md has the measurements):
+/// What each guide buys (relMSE per guide set: docs/quality.md):
 /// - `variance`: the noise level of every pixel, so the colour distance
 ///   tells noise from detail. Without it the variance comes from the halves
-///   (a 3x3 mean of `(half_a - half_b)^2 / 4`) or, with neither, from the
-///   3x3 neighbourhood, which also counts detail as noise. The strength is
-///   chosen from which one is used: `denoise_measured_strength` for a
-///   measured variance, `denoise_estimated_strength` for an estimated one.
+///   (the 3x3 mean of `(half_a - half_b)^2 / 4`) or, with neither, is
+///   estimated: per channel, the smallest 3x3 sample variance among the 3x3
+///   windows around the pixel (the window on one side of an edge, not the
+///   one across it). The strength follows: `denoise_measured_strength` for
+///   a measured variance, `denoise_estimated_strength` for an estimate.
 /// - `normal`, `depth`, `albedo`: neighbours on other surfaces, at other
 ///   distances or with another texture weigh less, so edges and texture
 ///   stay where the colour alone cannot tell them from noise.
-/// - `object_id`: neighbours on other objects are left out entirely, and
-///   fireflies are judged against their own object.
 /// - `half_a`, `half_b`: only used for the variance when it is absent.
+/// - `object_id` is not read: on every test scene the hard object edge made
+///   the result worse (fewer neighbours where the features already separate
+///   the objects), and defocus or motion blur make ids disagree with the
+///   beauty.
 /// Albedo is not divided out: the albedo buffer carries its own sampling
-/// noise (sub-pixel texture, defocus), which remodulation would put back
-/// (see docs/quality.md); `demodulate` / `remodulate` are there for chains
-/// with a clean albedo.
+/// noise (sub-pixel texture, defocus), which remodulation would put back;
+/// `demodulate` / `remodulate` are there for chains with a clean albedo.
 ///
-/// The `dst` attribute `mcdenoise:denoise_guides` lists the guides used.
+/// The `dst` attribute `mcdenoise:denoise_guides` lists the guides read.
 ///
 /// @param beauty  The noisy render, any channel count (colour first).
 /// @param guides  Any subset; each present one must cover the ROI.
@@ -53,6 +54,6 @@ constexpr FeatureSigmas denoise_feature_sigmas { 0.3f, 0.6f, 1.0f };
 /// `nlmeans` strength when the variance is measured (guide or halves).
 constexpr float denoise_measured_strength = 1.0f;
 /// `nlmeans` strength when the variance is estimated from the neighbourhood.
-constexpr float denoise_estimated_strength = 0.45f;
+constexpr float denoise_estimated_strength = 0.8f;
 
 }  // namespace mcdenoise
