@@ -141,12 +141,10 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
                     if (dx == 0 && dy == 0) {
                         std::fill(w.begin() + i0, w.begin() + i1, h);
                     } else {
-                        std::fill(e.begin() + i0, e.begin() + i1, 0.0f);
-                        features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
                         for (int i = i0; i < i1; ++i)
-                            e[i] += std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
-                        weights_from_exponents(e.data() + i0, h, i1 - i0, w.data() + i0);
-                        features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                            e[i] = std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
+                        features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, h,
+                                             w.data() + i0);
                     }
                     for (int i = i0; i < i1; ++i) {
                         wsum[i] += w[i];

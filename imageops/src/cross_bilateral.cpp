@@ -89,12 +89,11 @@ bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
                     } else {
                         std::fill(e.begin() + i0, e.begin() + i1,
                                   spatial_scale * float(dx * dx + dy * dy));
-                        features.add_exponent_row(y, xa, m, dx, dy, e.data() + i0);
                         if (by_color)
                             add_colour_exponent(colour, colour_scale, y, xa, m, dx, dy,
                                                 e.data() + i0);
-                        weights_from_exponents(e.data() + i0, 1.0f, m, w.data() + i0);
-                        features.mask_row(y, xa, m, dx, dy, w.data() + i0);
+                        features.weights_row(y, xa, m, dx, dy, e.data() + i0, 1.0f,
+                                             w.data() + i0);
                     }
                     sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
                 }

@@ -3,6 +3,7 @@
 // feature-guided filters.
 #include "feature_field.h"
 
+#include "weighted_sums.h"
 #include "window.h"
 
 #include <algorithm>
@@ -145,32 +146,26 @@ bool load_guide_channels(const char* op, ImageBuf& dst, const ImageBuf& guide,
     return true;
 }
 
-void FeatureField::add_exponent_row(int y, int x0, int n, int dx, int dy, float* e) const
+void FeatureField::weights_row(int y, int x0, int n, int dx, int dy, const float* e,
+                               float scale, float* w) const
 {
-    const size_t w  = size_t(region.width());
-    const size_t pc = size_t(y - region.ybegin) * w + size_t(x0 - region.xbegin);
-    const size_t pq = size_t(y + dy - region.ybegin) * w + size_t(x0 + dx - region.xbegin);
-    for (const std::vector<float>& dim : dims) {
-        const float* a = dim.data() + pc;
-        const float* b = dim.data() + pq;
-        for (int i = 0; i < n; ++i) {
-            const float t = a[i] - b[i];
-            e[i] += t * t;
-        }
-    }
-}
-
-void FeatureField::mask_row(int y, int x0, int n, int dx, int dy, float* w) const
-{
-    if (id_keys.empty())
-        return;
+    using OIIO::simd::vfloat8;
     const size_t width = size_t(region.width());
-    const int32_t* a = id_keys.data() + size_t(y - region.ybegin) * width
-                       + size_t(x0 - region.xbegin);
-    const int32_t* b = id_keys.data() + size_t(y + dy - region.ybegin) * width
-                       + size_t(x0 + dx - region.xbegin);
-    for (int i = 0; i < n; ++i)
-        w[i] = a[i] == b[i] ? w[i] : 0.0f;
+    const size_t pc = size_t(y - region.ybegin) * width + size_t(x0 - region.xbegin);
+    const size_t pq = size_t(y + dy - region.ybegin) * width + size_t(x0 + dx - region.xbegin);
+    const vfloat8 s(scale);
+    const bool by_id = !id_keys.empty();
+    const int32_t* ka = by_id ? id_keys.data() + pc : nullptr;
+    const int32_t* kb = by_id ? id_keys.data() + pq : nullptr;
+    for_each_lane_block(n, w, [&](int, auto&& load) {
+        vfloat8 x = load(e);
+        for (const std::vector<float>& dim : dims) {
+            const vfloat8 t = load(dim.data() + pc) - load(dim.data() + pq);
+            x = x + t * t;
+        }
+        const vfloat8 v = weight_lanes(x, s);
+        return by_id ? OIIO::simd::select(load(ka) == load(kb), v, vfloat8(0.0f)) : v;
+    });
 }
 
 bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,

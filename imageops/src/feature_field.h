@@ -55,14 +55,12 @@ struct FeatureField {
     /// over `region`; empty without an object id guide.
     std::vector<int32_t> id_keys;
 
-    /// Add to `e[i]` the feature exponent `(A + N + Z) / 2` of center
-    /// (x0 + i, y) and neighbour (x0 + i + dx, y + dy), for i < n. Both
-    /// pixels must lie in `region`.
-    void add_exponent_row(int y, int x0, int n, int dx, int dy, float* e) const;
-
-    /// Set `w[i]` to 0 where center (x0 + i, y) and neighbour
-    /// (x0 + i + dx, y + dy) have different object ids.
-    void mask_row(int y, int x0, int n, int dx, int dy, float* w) const;
+    /// The weights of center (x0 + i, y) and neighbour (x0 + i + dx, y + dy)
+    /// for i < n: `w[i] = scale * exp(-(e[i] + (A + N + Z) / 2))`, where
+    /// `e` holds the filter's own exponent, 0 past `max_weight_exponent`
+    /// and 0 across object ids. Both pixels must lie in `region`.
+    void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
+                     float* w) const;
 };
 
 /// Read the features of `guides` (checked with `check_feature_guides`) over

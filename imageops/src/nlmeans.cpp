@@ -161,9 +161,8 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                 const float cy = float(patch_count(y, dy, f, dw.ybegin, dw.yend));
                 for (int i = i0; i < i1; ++i)
                     e[i] = std::max(0.0f, e[i] / (cy * cx[i]));
-                in.features.add_exponent_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0);
-                weights_from_exponents(e.data() + i0, 1.0f, i1 - i0, w.data() + i0);
-                in.features.mask_row(y, x0 + i0, i1 - i0, dx, dy, w.data() + i0);
+                in.features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, 1.0f,
+                                        w.data() + i0);
                 s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
             }
         }

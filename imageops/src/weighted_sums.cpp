@@ -1,11 +1,8 @@
-// weighted_sums.cpp: masked weighted sums over pixel runs and weights from
-// exponents.
+// weighted_sums.cpp: masked weighted sums over pixel runs.
 #include "weighted_sums.h"
 
 #include "window.h"
 
-#include <OpenImageIO/fmath.h>
-#include <OpenImageIO/simd.h>
 
 #include <cmath>
 
@@ -97,27 +94,6 @@ int64_t WeightedSums::write(float* out, std::ptrdiff_t stride) const
 int64_t WeightedSums::write_planes(float* const* out) const
 {
     return write_each([=](int c, int i, float v) { out[c][i] = v; });
-}
-
-void weights_from_exponents(const float* e, float scale, int n, float* w)
-{
-    // Eight lanes at a time, the tail through the same lane-wise arithmetic
-    // (only loaded and stored in part), so a pixel's weight never depends on
-    // where its run starts.
-    using OIIO::simd::vfloat8;
-    const vfloat8 limit(max_weight_exponent), s(scale), zero(0.0f);
-    const auto weight = [&](const vfloat8& x) {
-        return OIIO::simd::select(x < limit, s * OIIO::fast_exp(-x), zero);
-    };
-    constexpr int lanes = vfloat8::elements;
-    int i = 0;
-    for (; i + lanes <= n; i += lanes)
-        weight(vfloat8(e + i)).store(w + i);
-    if (i < n) {
-        vfloat8 x;
-        x.load(e + i, n - i);
-        weight(x).store(w + i, n - i);
-    }
 }
 
 }  // namespace mcdenoise

@@ -6,6 +6,9 @@
 
 #include "pixel_block.h"
 
+#include <OpenImageIO/fmath.h>
+#include <OpenImageIO/simd.h>
+
 #if defined(__SSE__)
 #    include <xmmintrin.h>
 #endif
@@ -102,8 +105,55 @@ void for_each_segment(int xbegin, int xend, Fn&& fn)
 /// Past this exponent a float exp underflows to denormals: the weight is 0.
 constexpr float max_weight_exponent = 87.0f;
 
-/// `w[i] = scale * exp(-e[i])` for i < n (0 past `max_weight_exponent`),
-/// with a vectorisable exp.
-void weights_from_exponents(const float* e, float scale, int n, float* w);
+/// Eight floats (or 32-bit ints) from `p`, the first `count` of them read
+/// and the rest 0.
+inline OIIO::simd::vfloat8 load_lanes(const float* p, int count)
+{
+    OIIO::simd::vfloat8 v;
+    if (count == OIIO::simd::vfloat8::elements)
+        v.load(p);
+    else
+        v.load(p, count);
+    return v;
+}
+inline OIIO::simd::vint8 load_lanes(const int32_t* p, int count)
+{
+    OIIO::simd::vint8 v;
+    if (count == OIIO::simd::vint8::elements)
+        v.load(p);
+    else
+        v.load(p, count);
+    return v;
+}
+
+/// `scale * exp(-e)` lane by lane, 0 past `max_weight_exponent` (OIIO's
+/// fast_exp: at most 230 ulp from exp).
+inline OIIO::simd::vfloat8 weight_lanes(const OIIO::simd::vfloat8& e,
+                                        const OIIO::simd::vfloat8& scale)
+{
+    using OIIO::simd::vfloat8;
+    return OIIO::simd::select(e < vfloat8(max_weight_exponent), scale * OIIO::fast_exp(-e),
+                              vfloat8(0.0f));
+}
+
+/// Run `lanes(i, load)` for i = 0, 8, 16 ... < n, where `load(ptr)` reads
+/// the eight values ptr[i ..] (only those below n on the last block,
+/// padding with 0), and store each result at out + i (in part on the last
+/// block). Every pixel goes through the same lane-wise arithmetic, so a
+/// result never depends on where its run starts.
+template<class Lanes>
+void for_each_lane_block(int n, float* out, Lanes&& lanes)
+{
+    using OIIO::simd::vfloat8;
+    constexpr int width = vfloat8::elements;
+    int i = 0;
+    for (; i + width <= n; i += width)
+        lanes(i, [i](const auto* p) { return load_lanes(p + i, width); }).store(out + i);
+    if (i < n) {
+        const int rest = n - i;
+        lanes(i, [i, rest](const auto* p) { return load_lanes(p + i, rest); }).store(out + i, rest);
+    }
+}
+
 
 }  // namespace mcdenoise
