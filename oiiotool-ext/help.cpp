@@ -82,8 +82,8 @@ std::string role_names(const std::vector<Role>& roles)
     return names.empty() ? "-" : OIIO::Strutil::join(names, ", ");
 }
 
-/// "id, normal" for the roles a command needs, then "albedo (if present)"
-/// for those it uses when present; "-" for none.
+/// "id, normal" for the roles a command needs, then "albedo, variance (each
+/// if present)" for those it uses when present; "-" for none.
 std::string roles_text(const Command& command)
 {
     if (command.optional_roles.empty())

@@ -20,7 +20,8 @@ namespace mcdenoise {
 ///
 /// @param beauty        The noisy image, any channel count.
 /// @param guides        Object id, normal, depth and albedo are used when
-///                      present; variance and the halves are not read.
+///                      present; variance (still checked when given) and the
+///                      halves are not read.
 /// @param size          Window side: odd, 1..255.
 /// @param sigma_spatial Spatial fall-off in pixels; must be > 0.
 /// @param sigma_color   Colour fall-off; <= 0 leaves colour out (a pure
