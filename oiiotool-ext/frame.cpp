@@ -8,7 +8,7 @@
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
-#include "limits.h"
+#include "memory_limit.h"
 #include "output.h"
 #include "preview.h"
 

@@ -2,7 +2,7 @@
 #include "input.h"
 
 #include "error.h"
-#include "limits.h"
+#include "memory_limit.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>

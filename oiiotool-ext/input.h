@@ -19,7 +19,7 @@ using OIIO::ImageBuf;
 /// Reads all pixels of subimage 0 of `path` as float. Throws RunError
 /// "<context> : cannot read '<path>': <reason>" for missing, unreadable or
 /// truncated files, and before allocating anything when its float pixels
-/// would exceed `memory_limit` bytes (limits.h).
+/// would exceed `memory_limit` bytes (memory_limit.h).
 ImageBuf read_image(const std::string& path, std::string_view context, uint64_t memory_limit);
 
 /// The images read for one frame, by path.

@@ -1,5 +1,5 @@
-// limits.cpp: memory estimates and the limit they are checked against.
-#include "limits.h"
+// memory_limit.cpp: memory estimates and the limit they are checked against.
+#include "memory_limit.h"
 
 #include "error.h"
 

@@ -1,4 +1,4 @@
-// limits.h: the memory mcdtool may use. Every image's size is checked
+// memory_limit.h: the memory mcdtool may use. Every image's size is checked
 // against the limit (--memory-limit, default the machine's physical memory)
 // from its header, before its pixels are allocated, and a frame's working
 // set is checked before the filters run, so a render too large for memory
