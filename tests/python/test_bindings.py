@@ -16,7 +16,14 @@ from conftest import frame_file, mcdtool, random_image, read_pixels
 
 HEADERS = Path(__file__).resolve().parents[2] / "imageops" / "include" / "mcdenoise"
 
-#: mcdtool command -> (library function, guide channels by argument, keyword parameters).
+#: The Guides fields of a testrender frame with their channels, in the
+#: order of the Guides struct (mcdtool passes every one present).
+FEATURES = [("object_id", ["id"]), ("normal", ["N.X", "N.Y", "N.Z"]), ("depth", ["Z"]),
+            ("albedo", ["albedo.R", "albedo.G", "albedo.B"]), ("variance", ["var.R", "var.G", "var.B"]),
+            ("half_a", ["A.R", "A.G", "A.B"]), ("half_b", ["B.R", "B.G", "B.B"])]
+
+#: mcdtool command -> (library function, guide channels by argument (for
+#: `guides`, a list of (field, channels)), keyword parameters).
 CASES = {
     "--mean 5": ("mean", {}, {"size": 5}),
     "--median 5": ("median", {}, {"size": 5}),
@@ -33,6 +40,13 @@ CASES = {
     "--dof 4 1": ("dof", {"object_id": ["id"], "depth": ["Z"]}, {"levels": 4, "focus_level": 1}),
     "--dof-range 4 1 1.5 6": ("dof", {"object_id": ["id"], "depth": ["Z"]},
                               {"levels": 4, "focus_level": 1, "depth_near": 1.5, "depth_far": 6.0}),
+    "--cross-bilateral 7": ("cross_bilateral", {"guides": FEATURES[:4]}, {"size": 7}),
+    "--atrous 3": ("atrous", {"guides": FEATURES[:5]}, {"iterations": 3}),
+    "--nlmeans 3": ("nlmeans", {"guides": FEATURES[:5]}, {"search_radius": 3}),
+    "--denoise": ("denoise", {"guides": FEATURES}, {}),
+    "--clamp-fireflies 2": ("clamp_fireflies", {"guides": FEATURES[:1]}, {"factor": 2.0}),
+    "--demodulate": ("demodulate", {"albedo": ["albedo.R", "albedo.G", "albedo.B"]}, {}),
+    "--remodulate": ("remodulate", {"albedo": ["albedo.R", "albedo.G", "albedo.B"]}, {}),
 }
 
 
@@ -57,6 +71,14 @@ def channels(pixels, spec, names):
     """The named channels of a read image, as a contiguous H x W x C array."""
     index = [list(spec.channelnames).index(n) for n in names]
     return np.ascontiguousarray(pixels[:, :, index])
+
+
+def image_argument(pixels, spec, names, convert):
+    """An image argument from its channel `names` (a list), or a guides dict
+    from a list of (field, channel names); images made with `convert`."""
+    if isinstance(names[0], tuple):
+        return {field: convert(channels(pixels, spec, chans)) for field, chans in names}
+    return convert(channels(pixels, spec, names))
 
 
 def as_imagebuf(array):
@@ -103,14 +125,16 @@ def test_numpy_and_imagebuf_equal_mcdtool(sequence, tmp_path, command):
 
     pixels, spec = read_pixels(frame)
     beauty = channels(pixels, spec, ["R", "G", "B"])
-    guides = {arg: channels(pixels, spec, names) for arg, names in guide_channels.items()}
+    guides = {arg: image_argument(pixels, spec, names, lambda array: array)
+              for arg, names in guide_channels.items()}
     function = getattr(mcdenoise, name)
 
     from_numpy = function(beauty, **guides, **params)
     assert isinstance(from_numpy, np.ndarray) and from_numpy.dtype == np.float32
     assert from_numpy.tobytes() == expected.tobytes()
 
-    from_imagebuf = function(as_imagebuf(beauty), **{k: as_imagebuf(v) for k, v in guides.items()}, **params)
+    guide_bufs = {arg: image_argument(pixels, spec, names, as_imagebuf) for arg, names in guide_channels.items()}
+    from_imagebuf = function(as_imagebuf(beauty), **guide_bufs, **params)
     assert type(from_imagebuf) is oiio.ImageBuf
     assert from_imagebuf.get_pixels(oiio.FLOAT).tobytes() == expected.tobytes()
 
