@@ -303,6 +303,9 @@ def main(argv=None):
     except _mcdenoise.UsageError as error:
         print(f"mcdenoise.batch ERROR: {error}", file=sys.stderr)
         return 2
+    except OSError as error:  # e.g. no scheduler at --scheduler
+        print(f"mcdenoise.batch ERROR: {error}", file=sys.stderr)
+        return 1
     if not progress and not summary.ok:
         print(summary.report(), file=sys.stderr)
     return 0 if summary.ok else 1

@@ -1,7 +1,8 @@
 """mcdenoise.batch on the local process pool: the files equal mcdtool's
 sequence output; --skip-existing, failed frames, bad command lines, and
-inputs that must never be replaced."""
+inputs that must never be replaced; an unreachable --scheduler."""
 import os
+import socket
 import subprocess
 import sys
 
@@ -107,3 +108,18 @@ def test_input_is_never_replaced(sequence, tmp_path):
     assert summary.failed == [1, 2]
     assert all("input" in r.message for r in summary.results)
     assert {f: open(frame_file(sequence, f), "rb").read() for f in (1, 2)} == before
+
+
+def test_unreachable_scheduler_is_an_error(sequence, tmp_path):
+    """--scheduler with nothing listening: one error line naming the
+    address, exit 1, nothing written."""
+    with socket.socket() as probe:  # a port that was free a moment ago
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    env = dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s")
+    r = subprocess.run([sys.executable, "-m", "mcdenoise.batch", str(sequence), "--frames", "1-2", *CHAIN.split(),
+                        "-o", str(tmp_path / "clean.####.exr"), "--scheduler", f"tcp://127.0.0.1:{port}"],
+                       capture_output=True, text=True, timeout=120, env=env)
+    assert r.returncode == 1, r.stderr
+    assert r.stderr.startswith("mcdenoise.batch ERROR: ") and f"tcp://127.0.0.1:{port}" in r.stderr, r.stderr
+    assert os.listdir(tmp_path) == []
