@@ -1,6 +1,8 @@
 // denoise_guides.cpp: what each guide buys the denoise preset: relMSE of
 // `denoise` on every scene of the reference set with growing subsets of the
-// guides, printed as the markdown table in docs/quality.md.
+// guides, and the floor albedo demodulation would hit (the reference's
+// irradiance remodulated with the noisy albedo), printed as the markdown
+// table in docs/denoise.md.
 //
 // Usage: denoise_guides REFSET_DIR [SPP]   (e.g. build/bin/denoise_guides build/refset 16)
 #include <mcdenoise/mcdenoise.h>
@@ -97,5 +99,12 @@ int main(int argc, char** argv)
         }
         std::printf("\n");
     }
+    std::printf("| reference irradiance x noisy albedo (demodulation's floor) |");
+    for (size_t i = 0; i < std::size(scenes); ++i) {
+        const OIIO::ImageBuf irradiance = mcdenoise::demodulate(refs[i].beauty, refs[i].albedo);
+        const OIIO::ImageBuf floor = mcdenoise::remodulate(irradiance, noisy[i].albedo);
+        std::printf(" %.5f |", mcdenoise::rel_mse(floor, refs[i].beauty));
+    }
+    std::printf("\n");
     return 0;
 }
