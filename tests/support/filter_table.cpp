@@ -95,11 +95,13 @@ const std::vector<FilterRow>& filter_table()
         { "demodulate", needs_albedo,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
               return mcdenoise::demodulate(d, b, g.albedo, 0.01f, r, n);
-          } },
+          },
+          true },
         { "remodulate", needs_albedo,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
               return mcdenoise::remodulate(d, b, g.albedo, 0.01f, r, n);
-          } },
+          },
+          true },
         { "denoise", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
               return mcdenoise::denoise(d, b, features(g), r, n);

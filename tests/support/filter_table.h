@@ -41,6 +41,9 @@ struct FilterRow {
     const char* name;
     unsigned guides;  ///< GuideBit flags
     RunFilter run;
+    /// True for the per-pixel operations that copy non-finite values (and
+    /// may overflow huge ones) instead of leaving them out of a window.
+    bool per_pixel = false;
 };
 
 /// Every filter of the library, in header order.
