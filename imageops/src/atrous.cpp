@@ -184,36 +184,26 @@ bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int ite
     }
     if (!resolve_roi(op, dst, beauty, roi) || !check_feature_guides(op, dst, guides, roi))
         return false;
-    const ROI dw   = beauty.roi();
-    ROI first      = grow_and_clip(roi, reach_before(0, iterations), dw);
-    first.chbegin  = 0;
-    first.chend    = beauty.nchannels();
-    ROI read       = grow_and_clip(first, 1, dw);  // the variance estimate's windows
-    PixelBlock block;
-    FeatureField features;
-    VarianceField variance;
-    if (!read_beauty(op, dst, beauty, read, block)
-        || !load_feature_field(op, dst, guides, sigmas, first, nthreads, features))
-        return false;
-    const ColourField colour = colour_field(block, read, nthreads);
-    if (!load_variance(op, dst, guides.variance, colour, first, dw, nthreads, variance))
+    const ROI dw    = beauty.roi();
+    const ROI first = grow_and_clip(roi, reach_before(0, iterations), dw);
+    FeatureInputs in;
+    if (!load_feature_inputs(op, dst, beauty, guides, sigmas, first, first, nthreads, in))
         return false;
     Iterate cur;
-    cur.values    = sum_source(block, 0, beauty.nchannels(), first, nthreads);
-    cur.luminance = cut_plane(colour.luminance, read, first);
-    cur.variance  = std::move(variance.luminance);
-    block         = {};
+    cur.values    = std::move(in.values);
+    cur.luminance = cut_plane(in.colour.luminance, in.colour.region, first);
+    cur.variance  = std::move(in.variance.luminance);
     ResultPixels result;
     if (!begin_result(op, dst, beauty,
                       { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
                         guides.variance },
                       roi, result))
         return false;
-    const int ncolour = colour.nchannels();
+    const int ncolour = in.colour.nchannels();
     for (int i = 0; i < iterations; ++i) {
         const bool last = i == iterations - 1;
         const ROI out   = last ? roi : grow_and_clip(roi, reach_before(i + 1, iterations), dw);
-        cur = atrous_pass(cur, features, 1 << i, sigma_luminance, ncolour, out, dw,
+        cur = atrous_pass(cur, in.features, 1 << i, sigma_luminance, ncolour, out, dw,
                           last ? &result : nullptr, nthreads);
     }
     return finish_result(op, dst, result);

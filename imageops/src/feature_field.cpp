@@ -14,6 +14,7 @@ namespace mcdenoise {
 
 using OIIO::ImageBuf;
 using OIIO::ROI;
+using OIIO::roi_union;
 
 namespace {
 
@@ -282,6 +283,26 @@ bool load_variance(const char* op, ImageBuf& dst, const ImageBuf* variance,
         }
         out.luminance[i] = lum;
     });
+    return true;
+}
+
+bool load_feature_inputs(const char* op, ImageBuf& dst, const ImageBuf& beauty,
+                         const Guides& guides, const FeatureSigmas& sigmas, const ROI& window,
+                         const ROI& variance_region, int nthreads, FeatureInputs& in)
+{
+    const ROI dw = beauty.roi();
+    ROI read     = grow_and_clip(roi_union(window, variance_region), 1, dw);
+    read.chbegin = 0;
+    read.chend   = beauty.nchannels();
+    PixelBlock block;
+    if (!read_beauty(op, dst, beauty, read, block)
+        || !load_feature_field(op, dst, guides, sigmas, window, nthreads, in.features))
+        return false;
+    in.colour = colour_field(block, read, nthreads);
+    if (!load_variance(op, dst, guides.variance, in.colour, variance_region, dw, nthreads,
+                       in.variance))
+        return false;
+    in.values = sum_source(block, 0, beauty.nchannels(), window, nthreads);
     return true;
 }
 

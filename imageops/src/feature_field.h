@@ -8,6 +8,7 @@
 
 #include "guides.h"
 #include "pixel_block.h"
+#include "weighted_sums.h"
 
 #include <array>
 #include <cstdint>
@@ -110,5 +111,22 @@ struct VarianceField {
 bool load_variance(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf* variance,
                    const ColourField& colour, const OIIO::ROI& region,
                    const OIIO::ROI& data_window, int nthreads, VarianceField& out);
+
+/// Everything a variance-guided filter (atrous, nlmeans) reads, each
+/// converted once.
+struct FeatureInputs {
+    FeatureField features;   ///< over the window region
+    ColourField colour;      ///< over the variance region grown by 1
+    VarianceField variance;  ///< over the variance region
+    SumSource values;        ///< every beauty channel, over the window region
+};
+
+/// Read `beauty` and `guides` (checked with `check_feature_guides`): the
+/// features and values over `window`, the colour and variance over
+/// `variance_region` (both inside the beauty's data window).
+bool load_feature_inputs(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                         const Guides& guides, const FeatureSigmas& sigmas,
+                         const OIIO::ROI& window, const OIIO::ROI& variance_region,
+                         int nthreads, FeatureInputs& in);
 
 }  // namespace mcdenoise

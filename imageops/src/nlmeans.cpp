@@ -198,27 +198,16 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
     const ROI dw      = beauty.roi();
     const ROI search  = grow_and_clip(roi, search_radius, dw);
     const ROI patches = grow_and_clip(roi, search_radius + patch_radius, dw);
-    ROI read          = grow_and_clip(patches, 1, dw);  // the variance estimate's windows
-    read.chbegin      = 0;
-    read.chend        = beauty.nchannels();
-    PixelBlock block;
-    FeatureField features;
-    VarianceField variance;
-    if (!read_beauty(op, dst, beauty, read, block)
-        || !load_feature_field(op, dst, guides, sigmas, search, nthreads, features))
+    FeatureInputs fin;
+    if (!load_feature_inputs(op, dst, beauty, guides, sigmas, search, patches, nthreads, fin))
         return false;
-    const ColourField colour = colour_field(block, read, nthreads);
-    if (!load_variance(op, dst, guides.variance, colour, patches, dw, nthreads, variance))
-        return false;
-    const SumSource values = sum_source(block, 0, beauty.nchannels(), search, nthreads);
-    block = {};
     ResultPixels result;
     if (!begin_result(op, dst, beauty,
                       { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
                         guides.variance },
                       roi, result))
         return false;
-    const NlmInputs in { colour, variance, features, values, roi, dw,
+    const NlmInputs in { fin.colour, fin.variance, fin.features, fin.values, roi, dw,
                          search_radius, patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;

@@ -177,6 +177,25 @@ void weighted_mean(const Image& img, int c0, int c1, Taps&& taps, std::vector<do
     }
 }
 
+// Every pixel of the ROI: per channel, the weighted mean over the window of
+// radius r (clipped to the beauty) where the center weighs 1 and any other
+// q weighs weight(x, y, qx, qy).
+template<class Weight>
+std::vector<double> window_filter(const Image& beauty, const OIIO::ROI& roi, int r,
+                                  Weight&& weight, long* empty)
+{
+    std::vector<double> out;
+    for (int y = roi.ybegin; y < roi.yend; ++y)
+        for (int x = roi.xbegin; x < roi.xend; ++x)
+            weighted_mean(beauty, roi.chbegin, roi.chend, [&](auto visit) {
+                for (int qy = y - r; qy <= y + r; ++qy)
+                    for (int qx = x - r; qx <= x + r; ++qx)
+                        if (beauty.contains(qx, qy))
+                            visit(qx, qy, qx == x && qy == y ? 1.0 : weight(x, y, qx, qy));
+            }, out, empty);
+    return out;
+}
+
 }  // namespace
 
 std::vector<double> cross_bilateral(const Image& beauty, const Guides& guides, int size,
@@ -184,34 +203,20 @@ std::vector<double> cross_bilateral(const Image& beauty, const Guides& guides, i
                                     const Sigmas& sigmas, const OIIO::ROI& roi, long* empty)
 {
     const Pixels px(beauty, guides);
-    const int r = size / 2;
-    std::vector<double> out;
-    for (int y = roi.ybegin; y < roi.yend; ++y)
-        for (int x = roi.xbegin; x < roi.xend; ++x)
-            weighted_mean(beauty, roi.chbegin, roi.chend, [&](auto visit) {
-                for (int qy = y - r; qy <= y + r; ++qy)
-                    for (int qx = x - r; qx <= x + r; ++qx) {
-                        if (!beauty.contains(qx, qy))
-                            continue;
-                        if (qx == x && qy == y) {
-                            visit(qx, qy, 1.0);
-                            continue;
-                        }
-                        const double d2 = double((qx - x) * (qx - x) + (qy - y) * (qy - y));
-                        double e = d2 / (2 * sigma_spatial * sigma_spatial)
-                                   + feature_exponent(guides, sigmas, x, y, qx, qy);
-                        if (sigma_color > 0) {
-                            double c2 = 0;
-                            for (int c = 0; c < px.nc; ++c) {
-                                const double t = px.colour(x, y, c) - px.colour(qx, qy, c);
-                                c2 += t * t;
-                            }
-                            e += c2 / (2 * sigma_color * sigma_color);
-                        }
-                        visit(qx, qy, weight_of(e));
-                    }
-            }, out, empty);
-    return out;
+    return window_filter(beauty, roi, size / 2, [&](int x, int y, int qx, int qy) {
+        const double d2 = double((qx - x) * (qx - x) + (qy - y) * (qy - y));
+        double e = d2 / (2 * sigma_spatial * sigma_spatial)
+                   + feature_exponent(guides, sigmas, x, y, qx, qy);
+        if (sigma_color > 0) {
+            double c2 = 0;
+            for (int c = 0; c < px.nc; ++c) {
+                const double t = px.colour(x, y, c) - px.colour(qx, qy, c);
+                c2 += t * t;
+            }
+            e += c2 / (2 * sigma_color * sigma_color);
+        }
+        return weight_of(e);
+    }, empty);
 }
 
 std::vector<double> atrous(const Image& beauty, const Guides& guides, int iterations,
@@ -312,32 +317,18 @@ std::vector<double> nlmeans(const Image& beauty, const Guides& guides, int searc
         }
         return d / p.nc;
     };
-    std::vector<double> out;
-    for (int y = roi.ybegin; y < roi.yend; ++y)
-        for (int x = roi.xbegin; x < roi.xend; ++x)
-            weighted_mean(beauty, roi.chbegin, roi.chend, [&](auto visit) {
-                for (int qy = y - r; qy <= y + r; ++qy)
-                    for (int qx = x - r; qx <= x + r; ++qx) {
-                        if (!beauty.contains(qx, qy))
-                            continue;
-                        if (qx == x && qy == y) {
-                            visit(qx, qy, 1.0);
-                            continue;
-                        }
-                        double sum = 0;
-                        int count = 0;
-                        for (int ny = -f; ny <= f; ++ny)
-                            for (int nx = -f; nx <= f; ++nx)
-                                if (beauty.contains(x + nx, y + ny)
-                                    && beauty.contains(qx + nx, qy + ny)) {
-                                    sum += distance(x + nx, y + ny, qx + nx, qy + ny);
-                                    ++count;
-                                }
-                        visit(qx, qy, weight_of(std::max(0.0, sum / count)
-                                                + feature_exponent(guides, sigmas, x, y, qx, qy)));
-                    }
-            }, out, empty);
-    return out;
+    return window_filter(beauty, roi, r, [&](int x, int y, int qx, int qy) {
+        double sum = 0;
+        int count  = 0;
+        for (int ny = -f; ny <= f; ++ny)
+            for (int nx = -f; nx <= f; ++nx)
+                if (beauty.contains(x + nx, y + ny) && beauty.contains(qx + nx, qy + ny)) {
+                    sum += distance(x + nx, y + ny, qx + nx, qy + ny);
+                    ++count;
+                }
+        return weight_of(std::max(0.0, sum / count)
+                         + feature_exponent(guides, sigmas, x, y, qx, qy));
+    }, empty);
 }
 
 std::vector<double> modulate(const Image& beauty, const Image& albedo, double epsilon,
