@@ -101,9 +101,9 @@ def gallery(study, cfg, results, columns, path):
     None: the raw render; "ref": the reference), relMSE under each."""
     scenes = cfg["scenes"]
     side = int(round(CROP_FRACTION * cfg["res"]))
+    width = len(columns) * (side + 20) / 100 + 0.3  # inches; 0.3 for the scene names
     fig, axes = plt.subplots(len(scenes), len(columns), squeeze=False,
-                             figsize=(len(columns) * (side + 20) / 100,
-                                      len(scenes) * (side + 28) / 100 + 0.4))
+                             figsize=(width, len(scenes) * (side + 28) / 100 + 0.6))
     for r, scene in enumerate(scenes):
         for c, (title, spp, name) in enumerate(columns):
             ax = axes[r][c]
@@ -124,7 +124,7 @@ def gallery(study, cfg, results, columns, path):
                 ax.set_title(title.replace(" + ", "\n+ "), fontsize=6)
             if c == 0:
                 ax.set_ylabel(scene, fontsize=7)
-    fig.subplots_adjust(left=0.03, right=0.99, top=0.95, bottom=0.02, wspace=0.05,
+    fig.subplots_adjust(left=0.3 / width, right=0.99, top=0.95, bottom=0.05, wspace=0.05,
                         hspace=0.25)
     save_small(fig, path)
 
