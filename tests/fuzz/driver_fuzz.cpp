@@ -120,7 +120,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
     unsetenv("OCIO");
     static mcdfuzz::FuzzDir dir("driver");
     scratch = &dir;
+    dir.reset();
     make_scene(dir);
+    dir.leave();
     return 0;
 }
 
@@ -152,5 +154,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     for (const auto& entry : std::filesystem::directory_iterator(scratch->path()))
         mcdfuzz::require(entry.path().filename().string().find(".mcdtool-") == std::string::npos,
                          "a temp file was left behind");
+    scratch->leave();
     return 0;
 }

@@ -18,15 +18,15 @@ FuzzDir::FuzzDir(const std::string& target)
     const char* tmp = std::getenv("TMPDIR");
     fs::path base = tmp && *tmp ? fs::path(tmp) : fs::path("/tmp");
     path_ = (base / ("mcd-fuzz-" + target + "-" + std::to_string(getpid()))).string();
+    home_ = fs::current_path().string();
     fs::remove_all(path_);
     fs::create_directories(path_);
-    fs::current_path(path_);
 }
 
 FuzzDir::~FuzzDir()
 {
     std::error_code error;
-    fs::current_path(fs::temp_directory_path(error), error);
+    fs::current_path(home_, error);
     fs::remove_all(path_, error);
 }
 
@@ -42,6 +42,12 @@ void FuzzDir::reset() const
         std::ofstream out(fs::path(path_) / name, std::ios::binary);
         out.write(bytes.data(), std::streamsize(bytes.size()));
     }
+}
+
+void FuzzDir::leave() const
+{
+    std::error_code error;
+    fs::current_path(home_, error);
 }
 
 std::string file_bytes(const std::string& path)

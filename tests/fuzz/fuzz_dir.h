@@ -10,7 +10,8 @@
 namespace mcdfuzz {
 
 /// A scratch directory under $TMPDIR (or /tmp) named after the target and
-/// the process, removed at exit. The process works inside it.
+/// the process, removed at exit. The process works inside it between
+/// reset() and leave(), so libFuzzer's relative paths stay valid outside.
 class FuzzDir {
 public:
     explicit FuzzDir(const std::string& target);
@@ -20,13 +21,16 @@ public:
 
     /// Registers a file written back by every reset().
     void add(const std::string& name, std::string bytes);
-    /// Empties the directory and writes the registered files.
+    /// Empties the directory, writes the registered files and enters it.
     void reset() const;
+    /// Returns to the directory the process started in.
+    void leave() const;
     /// The directory's absolute path.
     const std::string& path() const { return path_; }
 
 private:
     std::string path_;
+    std::string home_;
     std::map<std::string, std::string> files_;
 };
 
