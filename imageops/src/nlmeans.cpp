@@ -53,7 +53,6 @@ template<int NC>
 void distance_row(const DistanceRows& rows, float k2, float channel_mean, int m, float* d)
 {
     using OIIO::simd::vfloat8;
-    constexpr int lanes = vfloat8::elements;
     const vfloat8 guard(distance_guard), k(k2), mean(channel_mean);
     // The distances of eight pixels, their rows read by `load`.
     const auto distances = [&](auto&& load) {
@@ -65,15 +64,7 @@ void distance_row(const DistanceRows& rows, float k2, float channel_mean, int m,
         }
         return sum * mean;
     };
-    int i = 0;
-    for (; i + lanes <= m; i += lanes)
-        distances([&](const float* row) { return vfloat8(row + i); }).store(d + i);
-    if (i < m)
-        distances([&](const float* row) {
-            vfloat8 v;
-            v.load(row + i, m - i);
-            return v;
-        }).store(d + i, m - i);
+    for_each_lane_block(m, d, [&](int, auto&& load) { return distances(load); });
 }
 
 // Number of n in [-f, f] with both p + n and p + d + n in [lo, hi).

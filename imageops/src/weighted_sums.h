@@ -9,6 +9,9 @@
 #include <OpenImageIO/fmath.h>
 #include <OpenImageIO/simd.h>
 
+#include <algorithm>
+#include <type_traits>
+
 #if defined(__SSE__)
 #    include <xmmintrin.h>
 #endif
@@ -106,24 +109,30 @@ void for_each_segment(int xbegin, int xend, Fn&& fn)
 constexpr float max_weight_exponent = 87.0f;
 
 /// Eight floats (or 32-bit ints) from `p`, the first `count` of them read
-/// and the rest 0.
-inline OIIO::simd::vfloat8 load_lanes(const float* p, int count)
+/// and the rest 0. A partial block goes through a local copy (OIIO's own
+/// partial loads read whole doubles at float alignment).
+template<class T>
+inline auto load_lanes(const T* p, int count)
 {
-    OIIO::simd::vfloat8 v;
-    if (count == OIIO::simd::vfloat8::elements)
-        v.load(p);
-    else
-        v.load(p, count);
-    return v;
+    using Lanes = std::conditional_t<std::is_same_v<T, float>, OIIO::simd::vfloat8,
+                                     OIIO::simd::vint8>;
+    if (count == Lanes::elements)
+        return Lanes(p);
+    T padded[Lanes::elements] = {};
+    std::copy_n(p, count, padded);
+    return Lanes(padded);
 }
-inline OIIO::simd::vint8 load_lanes(const int32_t* p, int count)
+
+/// The first `count` lanes of `v` into `p`.
+inline void store_lanes(const OIIO::simd::vfloat8& v, float* p, int count)
 {
-    OIIO::simd::vint8 v;
-    if (count == OIIO::simd::vint8::elements)
-        v.load(p);
-    else
-        v.load(p, count);
-    return v;
+    if (count == OIIO::simd::vfloat8::elements) {
+        v.store(p);
+        return;
+    }
+    float all[OIIO::simd::vfloat8::elements];
+    v.store(all);
+    std::copy_n(all, count, p);
 }
 
 /// `scale * exp(-e)` lane by lane, 0 past `max_weight_exponent` (OIIO's
@@ -151,7 +160,8 @@ void for_each_lane_block(int n, float* out, Lanes&& lanes)
         lanes(i, [i](const auto* p) { return load_lanes(p + i, width); }).store(out + i);
     if (i < n) {
         const int rest = n - i;
-        lanes(i, [i, rest](const auto* p) { return load_lanes(p + i, rest); }).store(out + i, rest);
+        store_lanes(lanes(i, [i, rest](const auto* p) { return load_lanes(p + i, rest); }),
+                    out + i, rest);
     }
 }
 
