@@ -12,6 +12,8 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cmath>
 #include <functional>
 #include <string>
@@ -69,6 +71,9 @@ struct GuidedFilter {
     MakeViable viable;
     MakeWeight weight;
 };
+
+// GoogleTest prints a filter by its name (so CTest names stay short).
+void PrintTo(const GuidedFilter& f, std::ostream* os) { *os << f.name; }
 
 spec::Viable same_object(const SpecGuides& g)
 {

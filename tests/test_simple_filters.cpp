@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cmath>
 #include <string>
 
@@ -26,6 +28,9 @@ struct SimpleFilter {
     spec::Spatial spatial;
     spec::Reduce reduce;
 };
+
+// GoogleTest prints a filter by its name (so CTest names stay short).
+void PrintTo(const SimpleFilter& f, std::ostream* os) { *os << f.name; }
 
 const SimpleFilter filters[] = {
     { "mean", static_cast<BoolForm>(mcdenoise::mean), spec::Spatial::box,

@@ -6,6 +6,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <ostream>
 #include <vector>
 
 namespace testfilters {
@@ -45,6 +46,9 @@ struct FilterRow {
     /// may overflow huge ones) instead of leaving them out of a window.
     bool per_pixel = false;
 };
+
+/// GoogleTest prints a row by its name (so CTest names stay short).
+inline void PrintTo(const FilterRow& row, std::ostream* os) { *os << row.name; }
 
 /// Every filter of the library, in header order.
 const std::vector<FilterRow>& filter_table();
