@@ -3,32 +3,15 @@
 // side by side with the simple filters of the same size in the same run.
 #include <mcdenoise/mcdenoise.h>
 
-#include "support/render_file.h"
+#include "bench_scene.h"
 
 #include <benchmark/benchmark.h>
-
-#include <cstdio>
-#include <cstdlib>
 
 namespace {
 
 using OIIO::ImageBuf;
 
-const testimg::Render& scene()
-{
-    static const testimg::Render r = [] {
-        const char* path = std::getenv("MCD_BENCH_SCENE");
-        testimg::Render loaded = testimg::read_render(path ? path : "");
-        if (!loaded.error.empty()) {
-            std::fprintf(stderr, "bench_guided_filters: set MCD_BENCH_SCENE to a testrender "
-                                 "file (%s)\n",
-                         loaded.error.c_str());
-            std::exit(2);
-        }
-        return loaded;
-    }();
-    return r;
-}
+const testimg::Render& scene() { return benchimg::bench_scene("bench_guided_filters"); }
 
 template<class Filter>
 void run(benchmark::State& state, Filter&& filter)
