@@ -135,20 +135,21 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
                     if (i0 >= i1)
                         continue;
                     const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
-                    const size_t q = src.offset(x0 + dx, y + dy);
+                    // Neighbour pointers start at i0 (those of i < i0 lie outside).
+                    const size_t q = src.offset(x0 + dx + i0, y + dy);
                     const float* lum_q = cur.luminance.data() + q;
                     const float* var_q = cur.variance.data() + q;
                     if (dx == 0 && dy == 0) {
                         std::fill(w.begin() + i0, w.begin() + i1, h);
                     } else {
                         for (int i = i0; i < i1; ++i)
-                            e[i] = std::fabs(lum_p[i] - lum_q[i]) * inv_p[i];
+                            e[i] = std::fabs(lum_p[i] - lum_q[i - i0]) * inv_p[i];
                         features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, h,
                                              w.data() + i0);
                     }
                     for (int i = i0; i < i1; ++i) {
                         wsum[i] += w[i];
-                        w2var[i] += w[i] * w[i] * var_q[i];
+                        w2var[i] += w[i] * w[i] * var_q[i - i0];
                     }
                     sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
                 }

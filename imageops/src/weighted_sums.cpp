@@ -52,17 +52,23 @@ WeightedSums::WeightedSums(int chbegin, int chend, int n, bool masked)
 
 void WeightedSums::add(const float* w, const SumSource& src, int qx0, int qy, int i0, int i1)
 {
-    const size_t at = src.offset(qx0, qy);
+    if (i0 >= i1)
+        return;
+    // Pointers start at i0: the neighbours of i < i0 may lie left of the
+    // source region.
+    const size_t at = src.offset(qx0 + i0, qy);
+    const int n     = i1 - i0;
+    const float* wi = w + i0;
     for (int c = 0; c < m_nc; ++c) {
         const float* v = src.value[size_t(m_c0 + c)].data() + at;
-        float* num     = m_num.data() + size_t(c) * m_n;
-        for (int i = i0; i < i1; ++i)
-            num[i] += w[i] * v[i];
+        float* num     = m_num.data() + size_t(c) * m_n + i0;
+        for (int i = 0; i < n; ++i)
+            num[i] += wi[i] * v[i];
         if (m_masked) {
             const float* m = src.finite[size_t(m_c0 + c)].data() + at;
-            float* den     = m_den.data() + size_t(c) * m_n;
-            for (int i = i0; i < i1; ++i)
-                den[i] += w[i] * m[i];
+            float* den     = m_den.data() + size_t(c) * m_n + i0;
+            for (int i = 0; i < n; ++i)
+                den[i] += wi[i] * m[i];
         }
     }
     if (!m_masked)

@@ -91,7 +91,8 @@ const std::vector<FilterRow>& filter_table()
         { "clamp_fireflies", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
               return mcdenoise::clamp_fireflies(d, b, features(g), 2.0f, s / 2, r, n);
-          } },
+          },
+          true },
         { "demodulate", needs_albedo,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
               return mcdenoise::demodulate(d, b, g.albedo, 0.01f, r, n);
