@@ -1,5 +1,5 @@
-// separable_mean.cpp: box means by sliding double-precision sums, binomial
-// means by float column-then-row convolution, both divided by the weights
+// separable_mean.cpp: wide box means by sliding double-precision sums, the
+// other kernels by float column-then-row taps, both divided by the weights
 // that contributed.
 #include "separable_mean.h"
 
@@ -17,7 +17,7 @@ Kernel1D box_kernel(int size)
 {
     Kernel1D k;
     k.radius = size / 2;
-    k.box    = true;
+    k.sliding = size > max_direct_box_size;
     k.weights.assign(size_t(size), 1.0f);
     return k;
 }
@@ -40,7 +40,7 @@ Kernel1D binomial_kernel(int size)
 ROI separable_source_region(const ROI& roi, const Kernel1D& kernel, const ROI& bounds)
 {
     ROI grown = roi;
-    if (kernel.box) {
+    if (kernel.sliding) {
         const int interval = restart_interval(kernel.radius);
         grown.xbegin = restart_at_or_before(roi.xbegin, bounds.xbegin, interval);
         grown.ybegin = restart_at_or_before(roi.ybegin, bounds.ybegin, interval);
@@ -158,12 +158,12 @@ private:
     std::vector<Sum> m_weights, m_reciprocals;
 };
 
-// Box means: vertical sums slide down the columns, horizontal sums slide
+// Wide box means: vertical sums slide down the columns, horizontal sums slide
 // along the row, both in double and both restarting from scratch every
 // `restart_interval` pixels from the data window's origin.
-class BoxRows {
+class SlidingBoxRows {
 public:
-    BoxRows(const SeparableSource& src, const ROI& strip)
+    SlidingBoxRows(const SeparableSource& src, const ROI& strip)
         : m_src(src), m_strip(strip), m_r(src.kernel.radius),
           m_interval(restart_interval(m_r)), m_channels(src.block().nchannels),
           m_xb(restart_at_or_before(strip.xbegin, src.origin_x, m_interval)),
@@ -292,11 +292,11 @@ private:
     int m_col_y = no_row;
 };
 
-// Binomial means: each row's window columns weighted and summed (float SIMD
+// Tapped means: each row's window columns weighted and summed (float SIMD
 // over the whole row), then each pixel's row of column sums weighted.
-class BinomialRows {
+class TapRows {
 public:
-    BinomialRows(const SeparableSource& src, const ROI& strip)
+    TapRows(const SeparableSource& src, const ROI& strip)
         : m_src(src), m_strip(strip), m_r(src.kernel.radius),
           m_channels(src.block().nchannels),
           m_x0(std::max(src.block().region.xbegin, strip.xbegin - m_r)),
@@ -407,13 +407,13 @@ private:
 struct SeparableMeanRows::Impl {
     Impl(const SeparableSource& source, const ROI& strip)
     {
-        if (source.kernel.box)
-            box.reset(new BoxRows(source, strip));
+        if (source.kernel.sliding)
+            sliding.reset(new SlidingBoxRows(source, strip));
         else
-            binomial.reset(new BinomialRows(source, strip));
+            taps.reset(new TapRows(source, strip));
     }
-    std::unique_ptr<BoxRows> box;
-    std::unique_ptr<BinomialRows> binomial;
+    std::unique_ptr<SlidingBoxRows> sliding;
+    std::unique_ptr<TapRows> taps;
 };
 
 SeparableMeanRows::SeparableMeanRows(const SeparableSource& source, const ROI& strip)
@@ -426,8 +426,8 @@ SeparableMeanRows::~SeparableMeanRows() = default;
 int64_t SeparableMeanRows::row(int y, float* out, std::ptrdiff_t stride,
                                uint8_t* empty_per_pixel)
 {
-    return m_impl->box ? m_impl->box->row(y, out, stride, empty_per_pixel)
-                       : m_impl->binomial->row(y, out, stride, empty_per_pixel);
+    return m_impl->sliding ? m_impl->sliding->row(y, out, stride, empty_per_pixel)
+                       : m_impl->taps->row(y, out, stride, empty_per_pixel);
 }
 
 void separable_mean_strip(const SeparableSource& source, const ROI& strip,

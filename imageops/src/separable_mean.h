@@ -1,10 +1,10 @@
 // separable_mean.h: the weighted mean with a separable spatial kernel (box or
 // binomial) over the finite values of each window: the simple mean and
 // gaussian, and the fast path of every guided weighted-mean filter wherever a
-// whole window is viable. Box sums slide in double precision (cost
-// independent of the size); binomial windows run column then row in float
-// SIMD. Sliding sums restart at fixed points, so a pixel's value never
-// depends on the strip or ROI it was computed in.
+// whole window is viable. Wide box sums slide in double precision (cost
+// independent of the size); narrow boxes and binomial windows run column
+// then row in float SIMD. Sliding sums restart at fixed points, so a pixel's
+// value never depends on the strip or ROI it was computed in.
 #pragma once
 
 #include "operation.h"
@@ -19,12 +19,17 @@ namespace mcdenoise {
 /// The 1D taps of a separable window of side 2 * radius + 1.
 struct Kernel1D {
     int radius = 0;
-    bool box   = false;         ///< all taps 1: summed with sliding sums
+    bool sliding = false;       ///< all taps 1 and wide: summed with sliding sums
     std::vector<float> weights; ///< 2 * radius + 1 taps
 };
 
-/// All-ones taps of a box window of side `size`.
+/// All-ones taps of a box window of side `size`. Windows wider than
+/// `max_direct_box_size` are summed with sliding sums, narrower ones tap by
+/// tap like the binomial (faster below the crossover on 1080p frames).
 Kernel1D box_kernel(int size);
+
+/// The widest box window summed tap by tap (measured in docs/benchmarks.md).
+constexpr int max_direct_box_size = 11;
 
 /// Row `size - 1` of Pascal's triangle, scaled to sum to 1 (the scale
 /// cancels in every weighted mean, and keeps large sizes in range).
