@@ -24,12 +24,17 @@ struct SameObjectAndReflection {
     {
         return specular(x, y) ? same_both.at(x, y) : same_id.at(x, y);
     }
-    bool viable(int px, int py, int qx, int qy) const
+    void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
-        return ids.at(qx, qy) == ids.at(px, py)
-               && (!specular(px, py) || reflect.at(qx, qy) == reflect.at(px, py));
+        const int64_t* id = ids.from(xs.begin, qy);
+        const int64_t center = ids.at(px, py);
+        if (!specular(px, py))
+            return matching_keys(id, center, xs, w);
+        const int64_t* rid = reflect.from(xs.begin, qy);
+        const int64_t center_rid = reflect.at(px, py);
+        for (int i = 0; i < xs.size(); ++i)
+            w[i] = id[i] == center && rid[i] == center_rid ? 1.0f : 0.0f;
     }
-    double weight(int, int, int, int) const { return 1.0; }
 };
 
 bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const ImageBuf& beauty,

@@ -46,17 +46,24 @@ bool load_window_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& 
                      const OIIO::ImageBuf& object_id, const OIIO::ROI& roi, int size,
                      int nthreads, IdPlane& ids);
 
+/// 1 where `keys` along `xs` equal `key`, else 0, into `w`.
+template<class Key>
+void matching_keys(const Key* keys, Key key, Span xs, float* w)
+{
+    for (int i = 0; i < xs.size(); ++i)
+        w[i] = keys[i] == key ? 1.0f : 0.0f;
+}
+
 /// Object rule: q is viable iff id(q) == id(p).
 struct SameObject {
     const IdPlane& ids;
     UniformMap uniform_windows;
 
     bool uniform(int x, int y) const { return uniform_windows.at(x, y); }
-    bool viable(int px, int py, int qx, int qy) const
+    void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
-        return ids.at(qx, qy) == ids.at(px, py);
+        matching_keys(ids.from(xs.begin, qy), ids.at(px, py), xs, w);
     }
-    double weight(int, int, int, int) const { return 1.0; }
 };
 
 /// Where object ids change, over the ids' region.

@@ -11,13 +11,26 @@
 
 namespace mcdenoise {
 
+/// Per-pixel working memory of `guided_mean_pixel`.
+struct GuidedScratch {
+    explicit GuidedScratch(int nchannels)
+        : sums(size_t(2 * nchannels)), weights(size_t(max_window_size))
+    {
+    }
+    std::vector<double> sums;    ///< numerators, then denominators
+    std::vector<float> weights;  ///< one window row's guide weights
+};
+
 /// The weighted mean of pixel (x, y)'s viable finite neighbours, each
-/// weighted by the spatial kernel times `rule.weight` (the center by its
-/// spatial weight alone), into `out`. `scratch` holds 2 * channels doubles.
+/// weighted by the spatial kernel times the rule's guide weight (the center
+/// by its spatial weight alone), into `out`. `Rule` provides
+/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
+/// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
+/// `xs`, of center (px, py), into w[qx - xs.begin].
 /// Returns the count of channels with no contribution (set to 0).
 template<class Rule>
 int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
-                      double* scratch, float* out)
+                      GuidedScratch& scratch, float* out)
 {
     const Kernel1D& k = src.kernel;
     const int r = k.radius, nc = src.nchannels;
@@ -25,23 +38,25 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
     const OIIO::ROI& reg    = block.region;
     const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
     const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
-    double* num = scratch;
-    double* den = scratch + nc;  // per channel when masked, else den[0] for all
-    std::fill(scratch, scratch + 2 * nc, 0.0);
+    double* num = scratch.sums.data();
+    double* den = num + nc;  // per channel when masked, else den[0] for all
+    float* guide = scratch.weights.data();
+    const float* kx = k.weights.data() + (xs.begin - x + r);
+    std::fill(num, num + 2 * nc, 0.0);
     for (int qy = ys.begin; qy < ys.end; ++qy) {
+        rule.row_weights(x, y, qy, xs, guide);
+        if (qy == y)
+            guide[x - xs.begin] = 1.0f;
         const double wy = k.weights[size_t(qy - y + r)];
         const float* v  = block.pixel(xs.begin, qy);
-        for (int qx = xs.begin; qx < xs.end; ++qx, v += block.nchannels) {
-            const bool center = qx == x && qy == y;
-            if (!center && !rule.viable(x, y, qx, qy))
+        for (int i = 0; i < xs.size(); ++i, v += block.nchannels) {
+            if (guide[i] == 0.0f)
                 continue;
-            const double w = wy * k.weights[size_t(qx - x + r)]
-                             * (center ? 1.0 : rule.weight(x, y, qx, qy));
+            const double w = wy * kx[i] * guide[i];
             if (src.masked) {
                 for (int c = 0; c < nc; ++c) {
-                    const double m = v[nc + c];  // 1 where finite, else 0 (value 0)
                     num[c] += w * v[c];
-                    den[c] += w * m;
+                    den[c] += w * v[nc + c];  // mask: 1 where finite, else 0 (value 0)
                 }
             } else {
                 for (int c = 0; c < nc; ++c)
@@ -74,7 +89,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     std::vector<float> fast_row(AllSelected ? 0 : size_t(w) * nc);
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
     std::vector<uint8_t> uniform(static_cast<size_t>(w));
-    std::vector<double> scratch(size_t(2 * nc));
+    GuidedScratch scratch(nc);
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
@@ -103,7 +118,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
                     std::copy_n(fast_row.data() + i * nc, nc, out);
                 empty += fast_empty[i];
             } else if (AllSelected || selected(x, y)) {
-                empty += guided_mean_pixel(src, rule, x, y, scratch.data(), out);
+                empty += guided_mean_pixel(src, rule, x, y, scratch, out);
             }
         }
     }

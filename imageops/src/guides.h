@@ -29,6 +29,8 @@ struct GuidePlane {
         return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
     }
     const T& at(int x, int y) const { return values[index(x, y)]; }
+    /// The values from (x, y) on along row y.
+    const T* from(int x, int y) const { return values.data() + index(x, y); }
 };
 
 /// Ids, rounded to the nearest whole number.
@@ -49,7 +51,6 @@ bool load_reflect_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf&
 /// A normal, unit length, or all zero for "no normal".
 struct UnitNormal {
     float x = 0.0f, y = 0.0f, z = 0.0f;
-    bool present() const { return x != 0.0f || y != 0.0f || z != 0.0f; }
 };
 
 /// Normals over `region`, normalised; zero-length or non-finite ones (and

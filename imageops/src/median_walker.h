@@ -45,7 +45,9 @@ bool load_median_source(const char* op, OIIO::ImageBuf& dst,
 
 /// A viability rule for the median walker. `Rule` provides
 /// `bool uniform(int x, int y) const`: every pixel of (x, y)'s clipped window
-/// is viable; and `bool viable(int px, int py, int qx, int qy) const`.
+/// is viable; and `void row_weights(int px, int py, int qy, Span xs,
+/// float* w) const`: for each neighbour (qx, qy), qx in `xs`, of center
+/// (px, py), w[qx - xs.begin] is 0 where it is not viable.
 /// Computes the median filter of one strip into `result`.
 template<class Rule>
 void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& strip,
@@ -63,6 +65,7 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
     std::vector<int> pending;  // whole windows waiting for a masked batch
     std::vector<const float*> rows(static_cast<size_t>(k), nullptr);
     std::vector<float> gathered(size_t(k) * k);
+    std::vector<float> viable(static_cast<size_t>(k));  // one window row's rule weights
     std::vector<char> fast(size_t(strip.width()));
     int64_t empty = 0;
 
@@ -96,10 +99,11 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
             int count   = 0;
             for (int dy = -r, i = 0; dy <= r; ++dy) {
                 const float* row = src.plane_row(c, y + dy);
+                rule.row_weights(x, y, y + dy, Span { x - r, x + r + 1 }, viable.data());
                 for (int dx = -r; dx <= r; ++dx, ++i) {
                     const float v = row[x + dx];
                     const bool ok = std::isfinite(v)
-                                    && ((dx == 0 && dy == 0) || rule.viable(x, y, x + dx, y + dy));
+                                    && ((dx == 0 && dy == 0) || viable[size_t(dx + r)] != 0.0f);
                     const bool low_first = count % 2 == 0;
                     slots_low[size_t(i * lanes8 + l)]  = ok ? v : (low_first ? -inf : inf);
                     slots_high[size_t(i * lanes8 + l)] = ok ? v : (low_first ? inf : -inf);
@@ -136,8 +140,9 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
         int n = 0;
         for (int qy = ys.begin; qy < ys.end; ++qy) {
             const float* row = src.plane_row(c, qy);
+            rule.row_weights(x, y, qy, xs, viable.data());
             for (int qx = xs.begin; qx < xs.end; ++qx)
-                if (std::isfinite(row[qx]) && rule.viable(x, y, qx, qy))
+                if (std::isfinite(row[qx]) && viable[size_t(qx - xs.begin)] != 0.0f)
                     gathered[size_t(n++)] = row[qx];
         }
         empty += n == 0;

@@ -13,15 +13,13 @@ using OIIO::ROI;
 namespace {
 
 // SPEC.md's normal weight: max(0, dot) of unit normals; 1 when both are
-// missing, 0 when one is. Identical normals weigh exactly 1.
-double normal_weight(const UnitNormal& a, const UnitNormal& b)
+// missing, 0 when one is. Identical normals weigh exactly 1, which also
+// covers two missing (all-zero) normals; one missing gives a zero dot.
+float normal_weight(const UnitNormal& a, const UnitNormal& b)
 {
-    if (!a.present() || !b.present())
-        return a.present() == b.present() ? 1.0 : 0.0;
     if (a.x == b.x && a.y == b.y && a.z == b.z)
-        return 1.0;
-    const double dot = double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z;
-    return std::max(0.0, dot);
+        return 1.0f;
+    return std::max(0.0f, a.x * b.x + a.y * b.y + a.z * b.z);
 }
 
 // Normal rule: q viable iff it shares the object id; weight by normals. A
@@ -32,13 +30,14 @@ struct SameObjectWeightedByNormal {
     UniformMap same_object_and_normal;
 
     bool uniform(int x, int y) const { return same_object_and_normal.at(x, y); }
-    bool viable(int px, int py, int qx, int qy) const
+    void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
-        return ids.at(qx, qy) == ids.at(px, py);
-    }
-    double weight(int px, int py, int qx, int qy) const
-    {
-        return normal_weight(normals.at(px, py), normals.at(qx, qy));
+        const int64_t* id = ids.from(xs.begin, qy);
+        const UnitNormal* n = normals.from(xs.begin, qy);
+        const int64_t center = ids.at(px, py);
+        const UnitNormal& center_normal = normals.at(px, py);
+        for (int i = 0; i < xs.size(); ++i)
+            w[i] = id[i] == center ? normal_weight(center_normal, n[i]) : 0.0f;
     }
 };
 
