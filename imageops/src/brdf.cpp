@@ -13,16 +13,17 @@ using OIIO::ROI;
 namespace {
 
 // BRDF rule: on a specular center (reflect id >= 0) q must share both the
-// object id and the reflect id; elsewhere the object id.
+// object id and the reflect id; elsewhere the object id. Key 0 is the
+// object id, key 1 the reflect id.
 struct SameObjectAndReflection {
     const IdPlane& ids;
     const IdPlane& reflect;
-    UniformMap same_id, same_both;
+    UniformMap windows;
 
     bool specular(int x, int y) const { return reflect.at(x, y) >= 0; }
     bool uniform(int x, int y) const
     {
-        return specular(x, y) ? same_both.at(x, y) : same_id.at(x, y);
+        return windows.uniform(x, y, specular(x, y) ? KeyBits(3) : KeyBits(1));
     }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
@@ -48,12 +49,13 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
         || !load_reflect_ids(op, dst, reflect_id, ids.region, nthreads, reflect))
         return false;
     const std::vector<int64_t>&id = ids.values, &rid = reflect.values;
-    const int r = size / 2;
     const SameObjectAndReflection rule {
-        ids, reflect, uniform_map(id_edges(ids, nthreads), roi, r, nthreads),
-        uniform_map(key_edges(ids.region, nthreads,
-                              [&](size_t i, size_t j) { return id[i] == id[j] && rid[i] == rid[j]; }),
-                    roi, r, nthreads)
+        ids, reflect,
+        uniform_map(key_changes(ids.region, nthreads,
+                                [&](size_t i, size_t j) {
+                                    return uint8_t((id[i] != id[j]) | (rid[i] != rid[j]) << 1);
+                                }),
+                    roi, size / 2, nthreads)
     };
     return run_window_filter(op, reduction, dst, beauty,
                              { &beauty, &object_id, &reflect_id }, size, rule, roi, nthreads);

@@ -157,9 +157,10 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     make_separable_source(std::move(block), beauty.roi(), box_kernel(1), nthreads, pixels);
     std::vector<SeparableSource> sources;
     std::vector<SameObject> rules;
+    const KeyChanges changes = id_changes(ids, nthreads);
     for (int side : sides) {
         sources.push_back(with_kernel(pixels, box_kernel(side)));
-        rules.push_back(same_object_rule(ids, roi, side, nthreads));
+        rules.push_back(same_object_rule(ids, changes, roi, side, nthreads));
     }
 
     ResultPixels result;

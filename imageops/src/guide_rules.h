@@ -11,34 +11,40 @@
 
 namespace mcdenoise {
 
-/// Which ROI pixels' windows are wholly viable.
+/// Up to four keys (object id; object and reflect id; ...) tracked at once,
+/// key k in bit k.
+using KeyBits = uint8_t;
+
+/// Per ROI pixel, the keys that change somewhere in its window.
 struct UniformMap {
     OIIO::ROI roi;
-    std::vector<uint8_t> flags;
+    std::vector<KeyBits> changed;
 
-    bool at(int x, int y) const
+    /// Whether (x, y)'s window holds one value of every key in `keys`.
+    bool uniform(int x, int y, KeyBits keys = 1) const
     {
-        return flags[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)];
+        return !(changed[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)]
+                 & keys);
     }
 };
 
-/// Where keys change: 1 at each pixel of `region` with a 4-neighbour (in
-/// `region`) of another key, keys compared by `same(i, j)` on flat
-/// row-major indices of `region`.
-struct KeyEdges {
+/// Where keys change over `region`: per pixel, bit k set when key k differs
+/// from the right neighbour's, bit 4 + k when it differs from the one below
+/// (pairs leaving `region` never change).
+struct KeyChanges {
     OIIO::ROI region;
     std::vector<uint8_t> flags;
 };
 
-template<class Same>
-KeyEdges key_edges(const OIIO::ROI& region, int nthreads, Same&& same);
+/// The key changes of `region`; `differ(i, j)` gives the keys that differ
+/// between flat row-major indices i and j of `region`.
+template<class Differ>
+KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ);
 
-/// Conservatively, the windows of radius `r` around the pixels of `roi` that
-/// are one key: those holding no pixel next to a key change (a window with
-/// two keys always holds such a pair; a window touched from outside is
-/// wrongly left out, which only sends it down the slow path). `edges` must
-/// cover the region the windows reach.
-UniformMap uniform_map(const KeyEdges& edges, const OIIO::ROI& roi, int r, int nthreads);
+/// Exactly, per pixel of `roi`, the keys that change between two
+/// neighbouring pixels of its window of radius `r` (clipped to the changes'
+/// region, which must cover every window).
+UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, int nthreads);
 
 /// Read a guide's object ids over what a window of side `size` reaches from
 /// `roi` and one pixel more, after checking the guide.
@@ -59,37 +65,40 @@ struct SameObject {
     const IdPlane& ids;
     UniformMap uniform_windows;
 
-    bool uniform(int x, int y) const { return uniform_windows.at(x, y); }
+    bool uniform(int x, int y) const { return uniform_windows.uniform(x, y); }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         matching_keys(ids.from(xs.begin, qy), ids.at(px, py), xs, w);
     }
 };
 
-/// Where object ids change, over the ids' region.
-KeyEdges id_edges(const IdPlane& ids, int nthreads);
+/// Where object ids change, over the ids' region (key 0).
+KeyChanges id_changes(const IdPlane& ids, int nthreads);
 
-/// The object rule over `ids` for windows of side `size` around `roi`.
-SameObject same_object_rule(const IdPlane& ids, const OIIO::ROI& roi, int size,
-                            int nthreads);
+/// The object rule over `ids` (whose changes are `changes`) for windows of
+/// side `size` around `roi`.
+SameObject same_object_rule(const IdPlane& ids, const KeyChanges& changes,
+                            const OIIO::ROI& roi, int size, int nthreads);
 
-template<class Same>
-KeyEdges key_edges(const OIIO::ROI& region, int nthreads, Same&& same)
+template<class Differ>
+KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ)
 {
-    KeyEdges edges { region, std::vector<uint8_t>(region.npixels()) };
-    uint8_t* flags = edges.flags.data();
+    KeyChanges changes { region, std::vector<uint8_t>(region.npixels()) };
+    uint8_t* flags = changes.flags.data();
     parallel_rows(region, nthreads, [&, flags](int ay) {
         // Local copies: byte stores could otherwise alias the bounds.
         const int w = region.width(), h = region.height(), y = ay - region.ybegin;
-        uint8_t* out = flags + size_t(y) * w;
+        uint8_t* out    = flags + size_t(y) * w;
         const size_t row = size_t(y) * w;
+        const bool below = y < h - 1;
         for (int x = 0; x < w; ++x) {
             const size_t i = row + x;
-            out[x] = (x > 0 && !same(i, i - 1)) || (x < w - 1 && !same(i, i + 1))
-                     || (y > 0 && !same(i, i - w)) || (y < h - 1 && !same(i, i + w));
+            const uint8_t right = x < w - 1 ? differ(i, i + 1) : 0;
+            const uint8_t down  = below ? differ(i, i + w) : 0;
+            out[x] = uint8_t(right | (down << 4));
         }
     });
-    return edges;
+    return changes;
 }
 
 }  // namespace mcdenoise

@@ -14,12 +14,48 @@ namespace mcdenoise {
 /// Per-pixel working memory of `guided_mean_pixel`.
 struct GuidedScratch {
     explicit GuidedScratch(int nchannels)
-        : sums(size_t(2 * nchannels)), weights(size_t(max_window_size))
+        : sums(size_t(2 * nchannels)), guide(size_t(max_window_size)),
+          weights(size_t(max_window_size))
     {
     }
-    std::vector<double> sums;    ///< numerators, then denominators
-    std::vector<float> weights;  ///< one window row's guide weights
+    std::vector<double> sums;     ///< numerators, then denominators
+    std::vector<float> guide;     ///< one window row's guide weights
+    std::vector<double> weights;  ///< the same row's whole weights
 };
+
+/// Adds one window row of `n` pixels `stride` floats apart, weighted by
+/// `w`, to `num` and `den` (per channel when `masked`: the mask values
+/// follow the `nc` colour values; else den[0] for all). `NC` is `nc` when
+/// known at compile time (0: read `nc`). Zero weights add zeros, which
+/// keeps the loop free of branches.
+template<int NC>
+void add_window_row(const float* v, int stride, const double* w, int n, int nc, bool masked,
+                    double* num, double* den)
+{
+    if constexpr (NC == 0) {
+        for (int i = 0; i < n; ++i, v += stride) {
+            for (int c = 0; c < nc; ++c) {
+                num[c] += w[i] * v[c];
+                if (masked)
+                    den[c] += w[i] * v[nc + c];
+            }
+            if (!masked)
+                den[0] += w[i];
+        }
+    } else {
+        // Register accumulators: stores through `num` would chain every add.
+        double sum[NC] = {}, weight[NC] = {};
+        for (int i = 0; i < n; ++i, v += stride)
+            for (int c = 0; c < NC; ++c) {
+                sum[c] += w[i] * v[c];
+                weight[c] += w[i] * (masked ? v[NC + c] : 1.0f);
+            }
+        for (int c = 0; c < NC; ++c) {
+            num[c] += sum[c];
+            den[masked ? c : 0] += masked ? weight[c] : (c == 0 ? weight[0] : 0.0);
+        }
+    }
+}
 
 /// The weighted mean of pixel (x, y)'s viable finite neighbours, each
 /// weighted by the spatial kernel times the rule's guide weight (the center
@@ -39,8 +75,9 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
     const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
     const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
     double* num = scratch.sums.data();
-    double* den = num + nc;  // per channel when masked, else den[0] for all
-    float* guide = scratch.weights.data();
+    double* den = num + nc;
+    float* guide = scratch.guide.data();
+    double* w    = scratch.weights.data();
     const float* kx = k.weights.data() + (xs.begin - x + r);
     std::fill(num, num + 2 * nc, 0.0);
     for (int qy = ys.begin; qy < ys.end; ++qy) {
@@ -48,21 +85,13 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
         if (qy == y)
             guide[x - xs.begin] = 1.0f;
         const double wy = k.weights[size_t(qy - y + r)];
-        const float* v  = block.pixel(xs.begin, qy);
-        for (int i = 0; i < xs.size(); ++i, v += block.nchannels) {
-            if (guide[i] == 0.0f)
-                continue;
-            const double w = wy * kx[i] * guide[i];
-            if (src.masked) {
-                for (int c = 0; c < nc; ++c) {
-                    num[c] += w * v[c];
-                    den[c] += w * v[nc + c];  // mask: 1 where finite, else 0 (value 0)
-                }
-            } else {
-                for (int c = 0; c < nc; ++c)
-                    num[c] += w * v[c];
-                den[0] += w;
-            }
+        for (int i = 0; i < xs.size(); ++i)
+            w[i] = wy * kx[i] * guide[i];
+        const float* v = block.pixel(xs.begin, qy);
+        switch (nc) {
+        case 3: add_window_row<3>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den); break;
+        case 4: add_window_row<4>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den); break;
+        default: add_window_row<0>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den);
         }
     }
     int empty = 0;

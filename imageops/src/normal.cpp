@@ -29,7 +29,7 @@ struct SameObjectWeightedByNormal {
     const GuidePlane<UnitNormal>& normals;
     UniformMap same_object_and_normal;
 
-    bool uniform(int x, int y) const { return same_object_and_normal.at(x, y); }
+    bool uniform(int x, int y) const { return same_object_and_normal.uniform(x, y); }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         const int64_t* id = ids.from(xs.begin, qy);
@@ -56,11 +56,11 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
     const std::vector<UnitNormal>& n = normals.values;
     const SameObjectWeightedByNormal rule {
         ids, normals,
-        uniform_map(key_edges(ids.region, nthreads,
-                              [&](size_t i, size_t j) {
-                                  return id[i] == id[j] && n[i].x == n[j].x && n[i].y == n[j].y
-                                         && n[i].z == n[j].z;
-                              }),
+        uniform_map(key_changes(ids.region, nthreads,
+                                [&](size_t i, size_t j) {
+                                    return uint8_t(id[i] != id[j] || n[i].x != n[j].x
+                                                   || n[i].y != n[j].y || n[i].z != n[j].z);
+                                }),
                     roi, size / 2, nthreads)
     };
     return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id, &normal },

@@ -21,7 +21,7 @@ bool object_filter(const char* op, Reduction reduction, ImageBuf& dst,
         || !load_window_ids(op, dst, beauty, object_id, roi, size, nthreads, ids))
         return false;
     return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id }, size,
-                             same_object_rule(ids, roi, size, nthreads), roi, nthreads);
+                             same_object_rule(ids, id_changes(ids, nthreads), roi, size, nthreads), roi, nthreads);
 }
 
 }  // namespace
