@@ -1,6 +1,8 @@
 // guides.cpp: checking and normalising auxiliary buffers.
 #include "guides.h"
 
+#include "pixel_block.h"
+
 #include <OpenImageIO/imagebufalgo_util.h>
 
 #include <atomic>
@@ -40,12 +42,13 @@ namespace {
 
 // Reads `guide` over `region` as `Raw` values and maps each pixel through
 // `convert(raw, inside)` (`inside`: within the guide's data window), strip
-// by strip on `nthreads` threads.
+// by strip on `nthreads` threads, a few rows at a time so the raw values
+// stay in cache. Float values are read in place where the guide holds them.
 template<class T, class Raw, class Convert>
 bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
-                int nthreads, OIIO::TypeDesc raw_type, GuidePlane<T>& plane,
-                Convert&& convert)
+                int nthreads, GuidePlane<T>& plane, Convert&& convert)
 {
+    constexpr size_t chunk_values = 16384;
     const int nc = guide.nchannels();
     const ROI dw = guide.roi();
     plane.region = region;
@@ -55,15 +58,34 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
     rows.chbegin = 0;
     rows.chend   = nc;
     OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
-        std::vector<Raw> raw(size_t(strip.width()) * strip.height() * nc);
-        if (!guide.get_pixels(strip, raw_type, raw.data())) {
-            ok = false;
-            return;
+        const int chunk = std::max(1, int(chunk_values / (size_t(strip.width()) * nc)));
+        std::vector<double> wide;
+        PixelBlock block;
+        for (int y0 = strip.ybegin; y0 < strip.yend && ok; y0 += chunk) {
+            ROI part  = strip;
+            part.ybegin = y0;
+            part.yend   = std::min(strip.yend, y0 + chunk);
+            const Raw* in = nullptr;
+            std::ptrdiff_t row_stride = std::ptrdiff_t(part.width()) * nc;
+            if constexpr (std::is_same_v<Raw, float>) {
+                ok = ok && load_block(guide, part, block);
+                in         = block.data;
+                row_stride = block.row_stride;
+            } else {
+                wide.resize(size_t(part.npixels()) * nc);
+                ok = ok && guide.get_pixels(part, OIIO::TypeDesc::DOUBLE, wide.data());
+                in = wide.data();
+            }
+            if (!ok)
+                return;
+            for (int y = part.ybegin; y < part.yend; ++y, in += row_stride) {
+                T* out = plane.values.data() + plane.index(part.xbegin, y);
+                const bool row_inside = y >= dw.ybegin && y < dw.yend;
+                const Raw* v = in;
+                for (int x = part.xbegin; x < part.xend; ++x, v += nc)
+                    *out++ = convert(v, row_inside && x >= dw.xbegin && x < dw.xend);
+            }
         }
-        const Raw* in = raw.data();
-        for (int y = strip.ybegin; y < strip.yend; ++y)
-            for (int x = strip.xbegin; x < strip.xend; ++x, in += nc)
-                plane.values[plane.index(x, y)] = convert(in, dw.contains(x, y));
     });
     if (!ok) {
         dst.errorfmt("{}: could not read a guide: {}", op, guide.geterror());
@@ -72,10 +94,29 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
     return true;
 }
 
-int64_t rounded_id(double v)
+// Reads ids through `convert`, as float where the guide's pixel type holds
+// only values a float represents exactly (half, float, 8 and 16 bit
+// integers), else as double.
+template<class Convert>
+bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
+                   int nthreads, IdPlane& plane, Convert&& convert)
 {
-    constexpr double limit = 9.0e18;  // inside int64's range
-    return int64_t(std::nearbyint(std::clamp(v, -limit, limit)));
+    using OIIO::TypeDesc;
+    const TypeDesc::BASETYPE t = TypeDesc::BASETYPE(ids.spec().format.basetype);
+    const bool exact_in_float = t == TypeDesc::HALF || t == TypeDesc::FLOAT
+                                || t == TypeDesc::UINT8 || t == TypeDesc::INT8
+                                || t == TypeDesc::UINT16 || t == TypeDesc::INT16;
+    if (exact_in_float)
+        return load_plane<int64_t, float>(op, dst, ids, region, nthreads, plane, convert);
+    return load_plane<int64_t, double>(op, dst, ids, region, nthreads, plane, convert);
+}
+
+// An id rounded to the nearest whole number; NaN as -1.
+template<class Raw>
+int64_t rounded_id(Raw v)
+{
+    constexpr Raw limit = Raw(9.0e18);  // inside int64's range
+    return std::isnan(v) ? int64_t(-1) : int64_t(std::nearbyint(std::clamp(v, -limit, limit)));
 }
 
 }  // namespace
@@ -83,31 +124,26 @@ int64_t rounded_id(double v)
 bool load_object_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
                      int nthreads, IdPlane& plane)
 {
-    return load_plane<int64_t, double>(op, dst, ids, region, nthreads, OIIO::TypeDesc::DOUBLE,
-                                       plane, [](const double* v, bool inside) {
-                                           if (!inside)
-                                               return no_guide_id;
-                                           return std::isnan(*v) ? int64_t(-1) : rounded_id(*v);
-                                       });
+    return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
+        return inside ? rounded_id(*v) : no_guide_id;
+    });
 }
 
 bool load_reflect_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
                       int nthreads, IdPlane& plane)
 {
-    return load_plane<int64_t, double>(op, dst, ids, region, nthreads, OIIO::TypeDesc::DOUBLE,
-                                       plane, [](const double* v, bool inside) {
-                                           if (!inside)
-                                               return no_guide_id;
-                                           const int64_t id = std::isnan(*v) ? -1 : rounded_id(*v);
-                                           return id < 0 ? int64_t(-1) : id;
-                                       });
+    return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
+        if (!inside)
+            return no_guide_id;
+        return std::max(rounded_id(*v), int64_t(-1));
+    });
 }
 
 bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const ROI& region,
                   int nthreads, GuidePlane<UnitNormal>& plane)
 {
     return load_plane<UnitNormal, float>(
-        op, dst, normals, region, nthreads, OIIO::TypeDesc::FLOAT, plane,
+        op, dst, normals, region, nthreads, plane,
         [](const float* n, bool inside) {
             const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1]
                                          + double(n[2]) * n[2]);
@@ -120,8 +156,7 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
 bool load_depths(const char* op, ImageBuf& dst, const ImageBuf& depth, const ROI& region,
                  int nthreads, GuidePlane<float>& plane)
 {
-    return load_plane<float, float>(op, dst, depth, region, nthreads, OIIO::TypeDesc::FLOAT,
-                                    plane, [](const float* d, bool inside) {
+    return load_plane<float, float>(op, dst, depth, region, nthreads, plane, [](const float* d, bool inside) {
                                         const bool far = !inside || !std::isfinite(*d)
                                                          || *d >= infinitely_far;
                                         return far ? std::numeric_limits<float>::infinity()

@@ -22,7 +22,11 @@ namespace {
 bool can_view_in_place(const ImageBuf& img, const ROI& region)
 {
     const OIIO::ImageSpec& spec = img.spec();
+    const ROI dw = img.roi();
     return img.localpixels() && spec.format == TypeDesc::FLOAT
+           && region.xbegin >= dw.xbegin && region.xend <= dw.xend
+           && region.ybegin >= dw.ybegin && region.yend <= dw.yend
+           && region.zbegin >= dw.zbegin && region.zend <= dw.zend
            && region.chbegin == 0 && region.chend == spec.nchannels
            && img.pixel_stride() == std::ptrdiff_t(sizeof(float)) * spec.nchannels
            && img.scanline_stride() % std::ptrdiff_t(sizeof(float)) == 0;
