@@ -81,9 +81,16 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
             for (int y = part.ybegin; y < part.yend; ++y, in += row_stride) {
                 T* out = plane.values.data() + plane.index(part.xbegin, y);
                 const bool row_inside = y >= dw.ybegin && y < dw.yend;
+                const int x0 = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
+                const int x1 = row_inside ? std::clamp(dw.xend, x0, part.xend) : part.xend;
                 const Raw* v = in;
-                for (int x = part.xbegin; x < part.xend; ++x, v += nc)
-                    *out++ = convert(v, row_inside && x >= dw.xbegin && x < dw.xend);
+                int x = part.xbegin;
+                for (; x < x0; ++x, v += nc)
+                    *out++ = convert(v, false);
+                for (; x < x1; ++x, v += nc)
+                    *out++ = convert(v, true);
+                for (; x < part.xend; ++x, v += nc)
+                    *out++ = convert(v, false);
             }
         }
     });
