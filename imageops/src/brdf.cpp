@@ -48,7 +48,7 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
         || !check_guide(op, "reflect_id", dst, reflect_id, 1, roi)
         || !load_reflect_ids(op, dst, reflect_id, ids.region, nthreads, reflect))
         return false;
-    const std::vector<int64_t>&id = ids.values, &rid = reflect.values;
+    const int64_t *id = ids.values.data(), *rid = reflect.values.data();
     const SameObjectAndReflection rule {
         ids, reflect,
         uniform_map(key_changes(ids.region, nthreads,

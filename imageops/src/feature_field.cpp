@@ -80,7 +80,7 @@ void estimate_variance(const float* plane, const ROI& src, const ROI& region,
 
 // The ids renumbered 0, 1, 2 ... in order of first appearance, so that
 // comparisons run on 32-bit lanes. Runs of one id are the common case.
-std::vector<int32_t> dense_keys(const std::vector<int64_t>& ids)
+std::vector<int32_t> dense_keys(const LargeVector<int64_t>& ids)
 {
     std::vector<int32_t> keys(ids.size());
     std::unordered_map<int64_t, int32_t> numbers;

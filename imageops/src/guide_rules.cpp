@@ -17,7 +17,7 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
     const OIIO::ROI& reg = changes.region;
     const int w = reg.width();
     const int x0 = std::max(reg.xbegin, roi.xbegin - r), x1 = std::min(reg.xend, roi.xend + r);
-    UniformMap map { roi, std::vector<KeyBits>(size_t(roi.width()) * roi.height()) };
+    UniformMap map { roi, LargeVector<KeyBits>(size_t(roi.width()) * roi.height()) };
     parallel_rows(roi, nthreads, [&](int y) {
         // Columns x0 .. x1 at offset r, zero padding r wide on both sides;
         // bounds copied locally so the byte stores cannot alias them.

@@ -18,7 +18,7 @@ using KeyBits = uint8_t;
 /// Per ROI pixel, the keys that change somewhere in its window.
 struct UniformMap {
     OIIO::ROI roi;
-    std::vector<KeyBits> changed;
+    LargeVector<KeyBits> changed;
 
     /// Whether (x, y)'s window holds one value of every key in `keys`.
     bool uniform(int x, int y, KeyBits keys = 1) const
@@ -33,7 +33,7 @@ struct UniformMap {
 /// (pairs leaving `region` never change).
 struct KeyChanges {
     OIIO::ROI region;
-    std::vector<uint8_t> flags;
+    LargeVector<uint8_t> flags;
 };
 
 /// The key changes of `region`; `differ(i, j)` gives the keys that differ
@@ -83,7 +83,7 @@ SameObject same_object_rule(const IdPlane& ids, const KeyChanges& changes,
 template<class Differ>
 KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ)
 {
-    KeyChanges changes { region, std::vector<uint8_t>(region.npixels()) };
+    KeyChanges changes { region, LargeVector<uint8_t>(region.npixels()) };
     uint8_t* flags = changes.flags.data();
     parallel_rows(region, nthreads, [&, flags](int ay) {
         // Local copies: byte stores could otherwise alias the bounds.

@@ -4,6 +4,8 @@
 // "infinitely far" made explicit.
 #pragma once
 
+#include "large_buffer.h"
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstdint>
@@ -22,7 +24,7 @@ bool check_guide(const char* op, const char* name, OIIO::ImageBuf& dst,
 template<class T>
 struct GuidePlane {
     OIIO::ROI region;
-    std::vector<T> values;
+    LargeVector<T> values;
 
     size_t index(int x, int y) const
     {

@@ -52,8 +52,8 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         || !check_guide(op, "normal", dst, normal, 3, roi)
         || !load_normals(op, dst, normal, ids.region, nthreads, normals))
         return false;
-    const std::vector<int64_t>& id = ids.values;
-    const std::vector<UnitNormal>& n = normals.values;
+    const int64_t* id = ids.values.data();
+    const UnitNormal* n = normals.values.data();
     const SameObjectWeightedByNormal rule {
         ids, normals,
         uniform_map(key_changes(ids.region, nthreads,
