@@ -21,9 +21,12 @@ struct SameObjectAndReflection {
     UniformMap windows;
 
     bool specular(int x, int y) const { return reflect.at(x, y) >= 0; }
-    bool uniform(int x, int y) const
+    void uniform_row(int y, Span xs, uint8_t* out) const
     {
-        return windows.uniform(x, y, specular(x, y) ? KeyBits(3) : KeyBits(1));
+        const KeyBits* changed = windows.from(xs.begin, y);
+        const int64_t* rid     = reflect.from(xs.begin, y);
+        for (int i = 0; i < xs.size(); ++i)
+            out[i] = !(changed[i] & (rid[i] >= 0 ? KeyBits(3) : KeyBits(1)));
     }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {

@@ -20,11 +20,18 @@ struct UniformMap {
     OIIO::ROI roi;
     LargeVector<KeyBits> changed;
 
-    /// Whether (x, y)'s window holds one value of every key in `keys`.
-    bool uniform(int x, int y, KeyBits keys = 1) const
+    /// The keys changing in the windows of (x, y) and the pixels after it.
+    const KeyBits* from(int x, int y) const
     {
-        return !(changed[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)]
-                 & keys);
+        return changed.data() + size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin);
+    }
+    /// For the pixels of row `y` along `xs`: 1 where the window holds one
+    /// value of every key in `keys`, into `out`.
+    void uniform_row(int y, Span xs, KeyBits keys, uint8_t* out) const
+    {
+        const KeyBits* c = from(xs.begin, y);
+        for (int i = 0; i < xs.size(); ++i)
+            out[i] = !(c[i] & keys);
     }
 };
 
@@ -65,7 +72,10 @@ struct SameObject {
     const IdPlane& ids;
     UniformMap uniform_windows;
 
-    bool uniform(int x, int y) const { return uniform_windows.uniform(x, y); }
+    void uniform_row(int y, Span xs, uint8_t* out) const
+    {
+        uniform_windows.uniform_row(y, xs, 1, out);
+    }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         matching_keys(ids.from(xs.begin, qy), ids.at(px, py), xs, w);

@@ -105,10 +105,11 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
 }
 
 /// The guided weighted mean over the pixels of `strip` that `selected(x, y)`
-/// picks: `rule.uniform(x, y)` pixels from the separable fast path, the
-/// others neighbour by neighbour. Rows with no selected pixel are skipped.
-/// With `AllSelected`, fast rows are written straight into `result` and only
-/// the other pixels are overwritten.
+/// picks: pixels whose windows `rule.uniform_row` marks wholly viable with
+/// weight 1 from the separable fast path, the others neighbour by
+/// neighbour. Rows with no selected pixel are skipped. With `AllSelected`,
+/// fast rows are written straight into `result` and only the other pixels
+/// are overwritten.
 template<bool AllSelected = false, class Rule, class Selected>
 void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& selected,
                        const OIIO::ROI& strip, ResultPixels& result)
@@ -118,36 +119,38 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     std::vector<float> fast_row(AllSelected ? 0 : size_t(w) * nc);
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
     std::vector<uint8_t> uniform(static_cast<size_t>(w));
+    std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
     GuidedScratch scratch(nc);
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
-        bool any_selected = false, any_uniform = false;
-        for (int x = strip.xbegin; x < strip.xend; ++x) {
-            const bool s = selected(x, y);
-            const bool u = s && rule.uniform(x, y);
-            uniform[size_t(x - strip.xbegin)] = u;
-            any_selected |= s;
-            any_uniform |= u;
+        if constexpr (!AllSelected) {
+            bool any_selected = false;
+            for (int x = strip.xbegin; x < strip.xend; ++x)
+                any_selected |= chosen[size_t(x - strip.xbegin)] = selected(x, y);
+            if (!any_selected)
+                continue;
         }
-        if (!any_selected)
-            continue;
+        rule.uniform_row(y, Span { strip.xbegin, strip.xend }, uniform.data());
+        int any_uniform = 0;
+        for (int i = 0; i < w; ++i)
+            any_uniform |= uniform[size_t(i)] &= chosen[size_t(i)];
         float* out_row = result.pixel(strip.xbegin, y);
         if (any_uniform) {
             if (AllSelected)
                 fast.row(y, out_row, stride, fast_empty.data());
             else
                 fast.row(y, fast_row.data(), nc, fast_empty.data());
+            for (int i = 0; i < w; ++i)
+                empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
         }
-        for (int x = strip.xbegin; x < strip.xend; ++x) {
-            const size_t i = size_t(x - strip.xbegin);
-            float* out     = out_row + std::ptrdiff_t(i) * stride;
-            if (uniform[i]) {
+        for (int i = 0; i < w; ++i) {
+            float* out = out_row + std::ptrdiff_t(i) * stride;
+            if (uniform[size_t(i)]) {
                 if (!AllSelected)
-                    std::copy_n(fast_row.data() + i * nc, nc, out);
-                empty += fast_empty[i];
-            } else if (AllSelected || selected(x, y)) {
-                empty += guided_mean_pixel(src, rule, x, y, scratch, out);
+                    std::copy_n(fast_row.data() + size_t(i) * nc, nc, out);
+            } else if (chosen[size_t(i)]) {
+                empty += guided_mean_pixel(src, rule, strip.xbegin + i, y, scratch, out);
             }
         }
     }

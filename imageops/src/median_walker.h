@@ -44,8 +44,8 @@ bool load_median_source(const char* op, OIIO::ImageBuf& dst,
                         int size, int nthreads, MedianSource& source);
 
 /// A viability rule for the median walker. `Rule` provides
-/// `bool uniform(int x, int y) const`: every pixel of (x, y)'s clipped window
-/// is viable; and `void row_weights(int px, int py, int qy, Span xs,
+/// `void uniform_row(int y, Span xs, uint8_t* out) const`: out[x - xs.begin]
+/// is 1 where every pixel of (x, y)'s clipped window is viable; and `void row_weights(int px, int py, int qy, Span xs,
 /// float* w) const`: for each neighbour (qx, qy), qx in `xs`, of center
 /// (px, py), w[qx - xs.begin] is 0 where it is not viable.
 /// Computes the median filter of one strip into `result`.
@@ -66,7 +66,7 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
     std::vector<const float*> rows(static_cast<size_t>(k), nullptr);
     std::vector<float> gathered(size_t(k) * k);
     std::vector<float> viable(static_cast<size_t>(k));  // one window row's rule weights
-    std::vector<char> fast(size_t(strip.width()));
+    std::vector<uint8_t> fast(size_t(strip.width()));
     int64_t empty = 0;
 
     // Medians of the windows at x .. x + kernel.lanes - 1 by the network.
@@ -152,9 +152,10 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
     for (int y = strip.ybegin; y < strip.yend; ++y) {
         // Windows of this row that are whole (not clipped) and fully viable.
         const bool whole_rows = net && y - r >= reg.ybegin && y + r < reg.yend;
+        rule.uniform_row(y, Span { strip.xbegin, strip.xend }, fast.data());
         for (int x = strip.xbegin; x < strip.xend; ++x)
-            fast[size_t(x - strip.xbegin)] = whole_rows && x - r >= reg.xbegin
-                                             && x + r < reg.xend && rule.uniform(x, y);
+            fast[size_t(x - strip.xbegin)] &= whole_rows && x - r >= reg.xbegin
+                                              && x + r < reg.xend;
         float* out_row = result.pixel(strip.xbegin, y);
         for (int c = 0; c < strip.nchannels(); ++c) {
             for (int dy = -r; dy <= r && whole_rows; ++dy)

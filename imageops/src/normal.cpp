@@ -29,7 +29,10 @@ struct SameObjectWeightedByNormal {
     const GuidePlane<UnitNormal>& normals;
     UniformMap same_object_and_normal;
 
-    bool uniform(int x, int y) const { return same_object_and_normal.uniform(x, y); }
+    void uniform_row(int y, Span xs, uint8_t* out) const
+    {
+        same_object_and_normal.uniform_row(y, xs, 1, out);
+    }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         const int64_t* id = ids.from(xs.begin, qy);

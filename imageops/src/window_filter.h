@@ -16,9 +16,11 @@ namespace mcdenoise {
 /// How a window's viable values become one value.
 enum class Reduction { box_mean, binomial_mean, median };
 
-/// Every neighbour is viable with weight 1: the simple filters' rule.
+/// Every neighbour is viable with weight 1: the simple filters' rule. Every
+/// rule provides `uniform_row(y, xs, out)`: out[x - xs.begin] is 1 where
+/// (x, y)'s window is wholly viable with guide weight 1, else 0.
 struct AllViable {
-    bool uniform(int, int) const { return true; }
+    void uniform_row(int, Span xs, uint8_t* out) const { std::fill_n(out, xs.size(), uint8_t(1)); }
     void row_weights(int, int, int, Span xs, float* w) const { std::fill_n(w, xs.size(), 1.0f); }
 };
 
