@@ -7,6 +7,7 @@
 #include "separable_mean.h"
 #include "window.h"
 
+#include <cstring>
 #include <vector>
 
 namespace mcdenoise {
@@ -144,14 +145,19 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
             for (int i = 0; i < w; ++i)
                 empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
         }
-        for (int i = 0; i < w; ++i) {
-            float* out = out_row + std::ptrdiff_t(i) * stride;
-            if (uniform[size_t(i)]) {
-                if (!AllSelected)
-                    std::copy_n(fast_row.data() + size_t(i) * nc, nc, out);
-            } else if (chosen[size_t(i)]) {
-                empty += guided_mean_pixel(src, rule, strip.xbegin + i, y, scratch, out);
-            }
+        if (!AllSelected && any_uniform)
+            for (int i = 0; i < w; ++i)
+                if (uniform[size_t(i)])
+                    std::copy_n(fast_row.data() + size_t(i) * nc, nc,
+                                out_row + std::ptrdiff_t(i) * stride);
+        // The other pixels, found by memchr: few away from guide edges.
+        const uint8_t* u = uniform.data();
+        for (auto* p = static_cast<const uint8_t*>(std::memchr(u, 0, size_t(w))); p;
+             p = static_cast<const uint8_t*>(std::memchr(p + 1, 0, size_t(u + w - p - 1)))) {
+            const int i = int(p - u);
+            if (chosen[size_t(i)])
+                empty += guided_mean_pixel(src, rule, strip.xbegin + i, y, scratch,
+                                           out_row + std::ptrdiff_t(i) * stride);
         }
     }
     result.empty_windows += empty;
