@@ -14,56 +14,25 @@ namespace mcdenoise {
 
 /// Per-pixel working memory of `guided_mean_pixel`.
 struct GuidedScratch {
-    explicit GuidedScratch(int nchannels)
-        : sums(size_t(2 * nchannels)), guide(size_t(max_window_size)),
-          weights(size_t(max_window_size))
+    explicit GuidedScratch(int block_channels)
+        : guide(size_t(max_window_size)),
+          spread(size_t(max_window_size) * block_channels),
+          sums(size_t(max_window_size) * block_channels)
     {
     }
-    std::vector<double> sums;     ///< numerators, then denominators
-    std::vector<float> guide;     ///< one window row's guide weights
-    std::vector<double> weights;  ///< the same row's whole weights
+    std::vector<float> guide;    ///< one window row's guide weights
+    std::vector<double> spread;  ///< its whole weights, one per value
+    std::vector<double> sums;    ///< weighted sums per window column and value
 };
-
-/// Adds one window row of `n` pixels `stride` floats apart, weighted by
-/// `w`, to `num` and `den` (per channel when `masked`: the mask values
-/// follow the `nc` colour values; else den[0] for all). `NC` is `nc` when
-/// known at compile time (0: read `nc`). Zero weights add zeros, which
-/// keeps the loop free of branches.
-template<int NC>
-void add_window_row(const float* v, int stride, const double* w, int n, int nc, bool masked,
-                    double* num, double* den)
-{
-    if constexpr (NC == 0) {
-        for (int i = 0; i < n; ++i, v += stride) {
-            for (int c = 0; c < nc; ++c) {
-                num[c] += w[i] * v[c];
-                if (masked)
-                    den[c] += w[i] * v[nc + c];
-            }
-            if (!masked)
-                den[0] += w[i];
-        }
-    } else {
-        // Register accumulators: stores through `num` would chain every add.
-        double sum[NC] = {}, weight[NC] = {};
-        for (int i = 0; i < n; ++i, v += stride)
-            for (int c = 0; c < NC; ++c) {
-                sum[c] += w[i] * v[c];
-                weight[c] += w[i] * (masked ? v[NC + c] : 1.0f);
-            }
-        for (int c = 0; c < NC; ++c) {
-            num[c] += sum[c];
-            den[masked ? c : 0] += masked ? weight[c] : (c == 0 ? weight[0] : 0.0);
-        }
-    }
-}
 
 /// The weighted mean of pixel (x, y)'s viable finite neighbours, each
 /// weighted by the spatial kernel times the rule's guide weight (the center
 /// by its spatial weight alone), into `out`. `Rule` provides
 /// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
 /// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
-/// `xs`, of center (px, py), into w[qx - xs.begin].
+/// `xs`, of center (px, py), into w[qx - xs.begin]. Each window row is one
+/// contiguous run of values, summed per value (colour and finite mask) in
+/// double by loops the compiler vectorises; zero weights add zeros.
 /// Returns the count of channels with no contribution (set to 0).
 template<class Rule>
 int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
@@ -72,34 +41,41 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
     const Kernel1D& k = src.kernel;
     const int r = k.radius, nc = src.nchannels;
     const PixelBlock& block = src.block();
-    const OIIO::ROI& reg    = block.region;
+    const int per = block.nchannels;  // nc values, then nc masks when masked
+    const OIIO::ROI& reg = block.region;
     const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
     const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
-    double* num = scratch.sums.data();
-    double* den = num + nc;
-    float* guide = scratch.guide.data();
-    double* w    = scratch.weights.data();
+    const int n = xs.size(), values = n * per;
+    float* guide   = scratch.guide.data();
+    double* spread = scratch.spread.data();
+    double* sums   = scratch.sums.data();
     const float* kx = k.weights.data() + (xs.begin - x + r);
-    std::fill(num, num + 2 * nc, 0.0);
+    std::fill(sums, sums + values, 0.0);
+    double total = 0.0;  // the weights' sum: the denominator when unmasked
     for (int qy = ys.begin; qy < ys.end; ++qy) {
         rule.row_weights(x, y, qy, xs, guide);
         if (qy == y)
             guide[x - xs.begin] = 1.0f;
         const double wy = k.weights[size_t(qy - y + r)];
-        for (int i = 0; i < xs.size(); ++i)
-            w[i] = wy * kx[i] * guide[i];
-        const float* v = block.pixel(xs.begin, qy);
-        switch (nc) {
-        case 3: add_window_row<3>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den); break;
-        case 4: add_window_row<4>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den); break;
-        default: add_window_row<0>(v, block.nchannels, w, xs.size(), nc, src.masked, num, den);
+        for (int i = 0; i < n; ++i) {
+            const double w = wy * kx[i] * guide[i];
+            total += w;
+            std::fill_n(spread + i * per, per, w);
         }
+        const float* v = block.pixel(xs.begin, qy);
+        for (int j = 0; j < values; ++j)
+            sums[j] += spread[j] * v[j];
     }
     int empty = 0;
     for (int c = 0; c < nc; ++c) {
-        const double d = src.masked ? den[c] : den[0];
-        const bool any = d > 0.0;
-        out[c]         = any ? float(num[c] / d) : 0.0f;
+        double num = 0.0, den = src.masked ? 0.0 : total;
+        for (int i = 0; i < n; ++i) {
+            num += sums[i * per + c];
+            if (src.masked)
+                den += sums[i * per + nc + c];
+        }
+        const bool any = den > 0.0;
+        out[c]         = any ? float(num / den) : 0.0f;
         empty += !any;
     }
     return empty;
@@ -121,7 +97,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
     std::vector<uint8_t> uniform(static_cast<size_t>(w));
     std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
-    GuidedScratch scratch(nc);
+    GuidedScratch scratch(src.block().nchannels);
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {

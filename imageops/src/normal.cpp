@@ -17,9 +17,8 @@ namespace {
 // covers two missing (all-zero) normals; one missing gives a zero dot.
 float normal_weight(const UnitNormal& a, const UnitNormal& b)
 {
-    if (a.x == b.x && a.y == b.y && a.z == b.z)
-        return 1.0f;
-    return std::max(0.0f, a.x * b.x + a.y * b.y + a.z * b.z);
+    const bool same = (a.x == b.x) & (a.y == b.y) & (a.z == b.z);
+    return same ? 1.0f : std::max(0.0f, a.x * b.x + a.y * b.y + a.z * b.z);
 }
 
 // Normal rule: q viable iff it shares the object id; weight by normals. A
