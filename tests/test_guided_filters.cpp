@@ -223,6 +223,34 @@ TEST_P(GuidedFilters, GuidesWithLargerDataWindowsGiveTheSameResult)
     expect_matches_spec(GetParam(), beauty, cropped, 5);
 }
 
+// The ids moved beyond 32 bits, keeping equality and sign: each id rounded
+// to r, then r >= 0 becomes r + 2^40 and r < 0 becomes r - 2^40 (stored as
+// double, exact; NaN stays NaN).
+ImageBuf beyond_32_bits(const ImageBuf& ids)
+{
+    ImageBuf wide(OIIO::ImageSpec(ids.spec().width, ids.spec().height, 1, TypeDesc::DOUBLE));
+    wide.set_origin(ids.spec().x, ids.spec().y);
+    constexpr double shift = 1099511627776.0;  // 2^40
+    for (OIIO::ImageBuf::Iterator<double, double> out(wide); !out.done(); ++out) {
+        const double r = std::nearbyint(ids.getchannel(out.x(), out.y(), 0, 0));
+        out[0]         = r >= 0.0 ? r + shift : r - shift;
+    }
+    return wide;
+}
+
+TEST_P(GuidedFilters, IdsBeyond32BitsFilterAsTheirSmallTwins)
+{
+    const ImageBuf beauty = testimg::random_image(45, 38, 3, 30);
+    const Guides small    = make_guides(45, 38, 31);
+    Guides wide           = small;
+    wide.ids              = beyond_32_bits(small.ids);
+    wide.reflect          = beyond_32_bits(small.reflect);
+    ImageBuf a, b;
+    ASSERT_TRUE(GetParam().run(a, beauty, small, 5, {}, 0)) << a.geterror();
+    ASSERT_TRUE(GetParam().run(b, beauty, wide, 5, {}, 0)) << b.geterror();
+    EXPECT_TRUE(testimg::bit_identical(a, b));
+}
+
 TEST_P(GuidedFilters, RejectsBadGuidesAndLeavesDstAlone)
 {
     const ImageBuf beauty = testimg::random_image(32, 24, 3, 15);

@@ -24,18 +24,18 @@ struct SameObjectAndReflection {
     void uniform_row(int y, Span xs, uint8_t* out) const
     {
         const KeyBits* changed = windows.from(xs.begin, y);
-        const int64_t* rid     = reflect.from(xs.begin, y);
+        const Id* rid     = reflect.from(xs.begin, y);
         for (int i = 0; i < xs.size(); ++i)
             out[i] = !(changed[i] & (rid[i] >= 0 ? KeyBits(3) : KeyBits(1)));
     }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
-        const int64_t* id = ids.from(xs.begin, qy);
-        const int64_t center = ids.at(px, py);
+        const Id* id = ids.from(xs.begin, qy);
+        const Id center = ids.at(px, py);
         if (!specular(px, py))
             return matching_keys(id, center, xs, w);
-        const int64_t* rid = reflect.from(xs.begin, qy);
-        const int64_t center_rid = reflect.at(px, py);
+        const Id* rid = reflect.from(xs.begin, qy);
+        const Id center_rid = reflect.at(px, py);
         for (int i = 0; i < xs.size(); ++i)
             w[i] = id[i] == center && rid[i] == center_rid ? 1.0f : 0.0f;
     }
@@ -51,7 +51,7 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
         || !check_guide(op, "reflect_id", dst, reflect_id, 1, roi)
         || !load_reflect_ids(op, dst, reflect_id, ids.region, nthreads, reflect))
         return false;
-    const int64_t *id = ids.values.data(), *rid = reflect.values.data();
+    const Id *id = ids.values.data(), *rid = reflect.values.data();
     const SameObjectAndReflection rule {
         ids, reflect,
         uniform_map(key_changes(ids.region, nthreads,

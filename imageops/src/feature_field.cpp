@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace mcdenoise {
 
@@ -76,24 +75,6 @@ void estimate_variance(const float* plane, const ROI& src, const ROI& region,
             }
         out[i] = n > 1 ? float(sq / (n - 1)) : 0.0f;
     });
-}
-
-// The ids renumbered 0, 1, 2 ... in order of first appearance, so that
-// comparisons run on 32-bit lanes. Runs of one id are the common case.
-std::vector<int32_t> dense_keys(const LargeVector<int64_t>& ids)
-{
-    std::vector<int32_t> keys(ids.size());
-    std::unordered_map<int64_t, int32_t> numbers;
-    int64_t last_id  = 0;
-    int32_t last_key = -1;
-    for (size_t i = 0; i < ids.size(); ++i) {
-        if (last_key < 0 || ids[i] != last_id) {
-            last_id  = ids[i];
-            last_key = numbers.emplace(last_id, int32_t(numbers.size())).first->second;
-        }
-        keys[i] = last_key;
-    }
-    return keys;
 }
 
 }  // namespace
@@ -180,7 +161,7 @@ bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
         IdPlane ids;
         if (!load_object_ids(op, dst, *guides.object_id, region, nthreads, ids))
             return false;
-        field.id_keys = dense_keys(ids.values);
+        field.id_keys.assign(ids.values.begin(), ids.values.end());
     }
     if (guides.albedo && sigmas.albedo > 0.0f) {
         GuideChannels albedo;

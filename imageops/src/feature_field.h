@@ -52,8 +52,8 @@ bool load_guide_channels(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageB
 struct FeatureField {
     OIIO::ROI region;
     std::vector<std::vector<float>> dims;
-    /// Object ids renumbered densely (equal ids, equal keys), row-major
-    /// over `region`; empty without an object id guide.
+    /// Object ids (as `load_object_ids` gives them), row-major over
+    /// `region`; empty without an object id guide.
     std::vector<int32_t> id_keys;
 
     /// The weights of center (x0 + i, y) and neighbour (x0 + i + dx, y + dy)

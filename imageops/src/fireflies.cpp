@@ -32,7 +32,7 @@ float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, i
     const ROI& reg   = colour.region;
     const Span xs    = clip_window(x, radius, reg.xbegin, reg.xend);
     const Span ys    = clip_window(y, radius, reg.ybegin, reg.yend);
-    const int64_t id = ids ? ids->at(x, y) : 0;
+    const Id id = ids ? ids->at(x, y) : 0;
     size_t n         = 0;
     for (int qy = ys.begin; qy < ys.end; ++qy)
         for (int qx = xs.begin; qx < xs.end; ++qx)
@@ -87,8 +87,8 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
                 }
                 continue;
             }
-            const int64_t* ip = &ids->at(roi.xbegin + i0, y);
-            const int64_t* iq = &ids->at(xq, y + dy);
+            const Id* ip = &ids->at(roi.xbegin + i0, y);
+            const Id* iq = &ids->at(xq, y + dy);
             for (int i = 0; i < n; ++i) {
                 const uint16_t same = uint16_t(ip[i] == iq[i]);
                 v[i] += same;

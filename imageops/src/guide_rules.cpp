@@ -55,7 +55,7 @@ bool load_window_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& 
 
 KeyChanges id_changes(const IdPlane& ids, int nthreads)
 {
-    const int64_t* v = ids.values.data();
+    const Id* v = ids.values.data();
     return key_changes(ids.region, nthreads,
                        [v](size_t i, size_t j) { return uint8_t(v[i] != v[j]); });
 }

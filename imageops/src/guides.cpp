@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/imagebufalgo_util.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -101,12 +102,12 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
     return true;
 }
 
-// Reads ids through `convert`, as float where the guide's pixel type holds
-// only values a float represents exactly (half, float, 8 and 16 bit
-// integers), else as double.
-template<class Convert>
-bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
-                   int nthreads, IdPlane& plane, Convert&& convert)
+// Reads `ids` over `region` through `convert(raw, inside)` into `plane`,
+// as float where the guide's pixel type holds only values a float
+// represents exactly (half, float, 8 and 16 bit integers), else as double.
+template<class T, class Convert>
+bool load_raw_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
+                  int nthreads, GuidePlane<T>& plane, Convert&& convert)
 {
     using OIIO::TypeDesc;
     const TypeDesc::BASETYPE t = TypeDesc::BASETYPE(ids.spec().format.basetype);
@@ -114,8 +115,58 @@ bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI
                                 || t == TypeDesc::UINT8 || t == TypeDesc::INT8
                                 || t == TypeDesc::UINT16 || t == TypeDesc::INT16;
     if (exact_in_float)
-        return load_plane<int64_t, float>(op, dst, ids, region, nthreads, plane, convert);
-    return load_plane<int64_t, double>(op, dst, ids, region, nthreads, plane, convert);
+        return load_plane<T, float>(op, dst, ids, region, nthreads, plane, convert);
+    return load_plane<T, double>(op, dst, ids, region, nthreads, plane, convert);
+}
+
+// The whole-number ids of `wide` (outside pixels as INT64_MIN) numbered
+// densely in their order, zero at the first non-negative id: equality and
+// sign are kept.
+void renumber(const GuidePlane<int64_t>& wide, IdPlane& plane)
+{
+    constexpr int64_t outside = std::numeric_limits<int64_t>::min();
+    std::vector<int64_t> sorted(wide.values.begin(), wide.values.end());
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    sorted.erase(std::remove(sorted.begin(), sorted.end(), outside), sorted.end());
+    const auto zero = std::lower_bound(sorted.begin(), sorted.end(), int64_t(0));
+    plane.region = wide.region;
+    plane.values.resize(wide.values.size());
+    for (size_t i = 0; i < wide.values.size(); ++i) {
+        const int64_t v = wide.values[i];
+        plane.values[i] = v == outside ? no_guide_id
+                                       : Id(std::lower_bound(sorted.begin(), sorted.end(), v)
+                                            - zero);
+    }
+}
+
+// Ids through `convert(raw, inside)` (whole numbers, INT64_MIN outside the
+// data window): stored as they are when every one fits in 32 bits, else
+// renumbered from a 64-bit plane.
+template<class Convert>
+bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
+                   int nthreads, IdPlane& plane, Convert&& convert)
+{
+    constexpr int64_t outside = std::numeric_limits<int64_t>::min();
+    std::atomic<bool> wide_ids { false };
+    const bool ok = load_raw_ids(op, dst, ids, region, nthreads, plane,
+                                 [&](const auto* v, bool inside) {
+                                     const int64_t id = convert(v, inside);
+                                     if (id == outside)
+                                         return no_guide_id;
+                                     const bool fits = id > no_guide_id
+                                                       && id <= std::numeric_limits<Id>::max();
+                                     if (!fits)
+                                         wide_ids.store(true, std::memory_order_relaxed);
+                                     return Id(fits ? id : 0);
+                                 });
+    if (!ok || !wide_ids)
+        return ok;
+    GuidePlane<int64_t> wide;
+    if (!load_raw_ids(op, dst, ids, region, nthreads, wide, convert))
+        return false;
+    renumber(wide, plane);
+    return true;
 }
 
 // An id rounded to the nearest whole number; NaN as -1.
@@ -132,7 +183,7 @@ bool load_object_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const R
                      int nthreads, IdPlane& plane)
 {
     return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
-        return inside ? rounded_id(*v) : no_guide_id;
+        return inside ? rounded_id(*v) : std::numeric_limits<int64_t>::min();
     });
 }
 
@@ -140,9 +191,8 @@ bool load_reflect_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const 
                       int nthreads, IdPlane& plane)
 {
     return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
-        if (!inside)
-            return no_guide_id;
-        return std::max(rounded_id(*v), int64_t(-1));
+        return inside ? std::max(rounded_id(*v), int64_t(-1))
+                      : std::numeric_limits<int64_t>::min();
     });
 }
 

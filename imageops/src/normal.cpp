@@ -34,9 +34,9 @@ struct SameObjectWeightedByNormal {
     }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
-        const int64_t* id = ids.from(xs.begin, qy);
+        const Id* id = ids.from(xs.begin, qy);
         const UnitNormal* n = normals.from(xs.begin, qy);
-        const int64_t center = ids.at(px, py);
+        const Id center = ids.at(px, py);
         const UnitNormal& center_normal = normals.at(px, py);
         for (int i = 0; i < xs.size(); ++i)
             w[i] = id[i] == center ? normal_weight(center_normal, n[i]) : 0.0f;
@@ -54,7 +54,7 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         || !check_guide(op, "normal", dst, normal, 3, roi)
         || !load_normals(op, dst, normal, ids.region, nthreads, normals))
         return false;
-    const int64_t* id = ids.values.data();
+    const Id* id = ids.values.data();
     const UnitNormal* n = normals.values.data();
     const SameObjectWeightedByNormal rule {
         ids, normals,
