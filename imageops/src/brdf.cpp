@@ -21,6 +21,12 @@ struct SameObjectAndReflection {
     UniformMap windows;
 
     bool specular(int x, int y) const { return reflect.at(x, y) >= 0; }
+
+    static constexpr bool keyed = true;  ///< the weights depend on the center's ids alone
+    int64_t key(int x, int y) const
+    {
+        return int64_t(ids.at(x, y)) * (int64_t(1) << 32) + int64_t(reflect.at(x, y));
+    }
     void uniform_row(int y, Span xs, uint8_t* out) const
     {
         const KeyBits* changed = windows.from(xs.begin, y);

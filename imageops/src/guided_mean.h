@@ -12,67 +12,76 @@
 
 namespace mcdenoise {
 
-/// Per-pixel working memory of `guided_mean_pixel`.
+/// Working memory of `guided_mean_pixel` and `guided_mean_run` for runs of
+/// up to `span` columns of `block_channels` values each.
 struct GuidedScratch {
-    explicit GuidedScratch(int block_channels)
-        : guide(size_t(max_window_size)),
-          spread(size_t(max_window_size) * block_channels),
-          sums(size_t(max_window_size) * block_channels)
+    GuidedScratch(int span, int block_channels)
+        : guide(size_t(span)), column_weights(size_t(span)),
+          spread(size_t(span) * block_channels), sums(size_t(span) * block_channels)
     {
     }
-    std::vector<float> guide;    ///< one window row's guide weights
-    std::vector<double> spread;  ///< its whole weights, one per value
-    std::vector<double> sums;    ///< weighted sums per window column and value
+    std::vector<float> guide;             ///< one window row's guide weights
+    std::vector<double> column_weights;   ///< whole weights summed per column
+    std::vector<double> spread;           ///< one row's whole weights, one per value
+    std::vector<double> sums;             ///< weighted sums per column and value
 };
 
-/// The weighted mean of pixel (x, y)'s viable finite neighbours, each
-/// weighted by the spatial kernel times the rule's guide weight (the center
-/// by its spatial weight alone), into `out`. `Rule` provides
-/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
-/// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
-/// `xs`, of center (px, py), into w[qx - xs.begin]. Each window row is one
-/// contiguous run of values, summed per value (colour and finite mask) in
-/// double by loops the compiler vectorises; zero weights add zeros.
-/// Returns the count of channels with no contribution (set to 0).
+/// Adds window row `qy` (columns `cols`, weighted by `wy` times the rule's
+/// guide weights for center (px, py)) to the per-column sums of `scratch`:
+/// each value weighted in double by loops the compiler vectorises (zero
+/// weights add zeros), and the weights to `column_weights`.
 template<class Rule>
-int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
-                      GuidedScratch& scratch, float* out)
+void add_window_row(const SeparableSource& src, const Rule& rule, int px, int py, int qy,
+                    Span cols, double wy, GuidedScratch& scratch)
 {
-    const Kernel1D& k = src.kernel;
-    const int r = k.radius, nc = src.nchannels;
     const PixelBlock& block = src.block();
-    const int per = block.nchannels;  // nc values, then nc masks when masked
-    const OIIO::ROI& reg = block.region;
-    const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
-    const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
-    const int n = xs.size(), values = n * per;
-    float* guide   = scratch.guide.data();
+    const int per = block.nchannels, n = cols.size(), values = n * per;
+    float* guide = scratch.guide.data();
     double* spread = scratch.spread.data();
     double* sums   = scratch.sums.data();
-    const float* kx = k.weights.data() + (xs.begin - x + r);
-    std::fill(sums, sums + values, 0.0);
-    double total = 0.0;  // the weights' sum: the denominator when unmasked
-    for (int qy = ys.begin; qy < ys.end; ++qy) {
-        rule.row_weights(x, y, qy, xs, guide);
-        if (qy == y)
-            guide[x - xs.begin] = 1.0f;
-        const double wy = k.weights[size_t(qy - y + r)];
-        for (int i = 0; i < n; ++i) {
-            const double w = wy * kx[i] * guide[i];
-            total += w;
-            std::fill_n(spread + i * per, per, w);
-        }
-        const float* v = block.pixel(xs.begin, qy);
-        for (int j = 0; j < values; ++j)
-            sums[j] += spread[j] * v[j];
+    rule.row_weights(px, py, qy, cols, guide);
+    if (qy == py && px >= cols.begin && px < cols.end)
+        guide[px - cols.begin] = 1.0f;
+    for (int i = 0; i < n; ++i) {
+        const double w = wy * guide[i];
+        scratch.column_weights[size_t(i)] += w;
+        std::fill_n(spread + i * per, per, w);
     }
+    const float* v = block.pixel(cols.begin, qy);
+    for (int j = 0; j < values; ++j)
+        sums[j] += spread[j] * v[j];
+}
+
+/// Zeroes the per-column sums of `n` columns.
+inline void clear_columns(GuidedScratch& scratch, int n, int per)
+{
+    std::fill_n(scratch.sums.data(), size_t(n) * per, 0.0);
+    std::fill_n(scratch.column_weights.data(), size_t(n), 0.0);
+}
+
+/// The weighted mean at x from the column sums of `scratch`, which start at
+/// column `first`: each column in x's window weighted by the spatial kernel,
+/// into `out`. Returns the count of channels with no contribution (set to 0).
+inline int mean_from_columns(const SeparableSource& src, int x, int first,
+                             const GuidedScratch& scratch, float* out)
+{
+    const Kernel1D& k = src.kernel;
+    const int r = k.radius, nc = src.nchannels, per = src.block().nchannels;
+    const OIIO::ROI& reg = src.block().region;
+    const Span xs        = clip_window(x, r, reg.xbegin, reg.xend);
+    const float* kx      = k.weights.data() + (xs.begin - x + r);
+    const double* sums   = scratch.sums.data() + size_t(xs.begin - first) * per;
+    const double* cw     = scratch.column_weights.data() + (xs.begin - first);
+    double total = 0.0;
+    for (int i = 0; i < xs.size(); ++i)
+        total += kx[i] * cw[i];
     int empty = 0;
     for (int c = 0; c < nc; ++c) {
         double num = 0.0, den = src.masked ? 0.0 : total;
-        for (int i = 0; i < n; ++i) {
-            num += sums[i * per + c];
+        for (int i = 0; i < xs.size(); ++i) {
+            num += kx[i] * sums[i * per + c];
             if (src.masked)
-                den += sums[i * per + nc + c];
+                den += kx[i] * sums[i * per + nc + c];
         }
         const bool any = den > 0.0;
         out[c]         = any ? float(num / den) : 0.0f;
@@ -81,10 +90,49 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
     return empty;
 }
 
+/// The weighted mean (as `guided_mean_pixel`) of the pixels [xb, xe) of row y, written `stride`
+/// floats apart from `out`, whose guide weights are the same function of
+/// the neighbour for every pixel of the run (rules whose weights depend on
+/// a key of the center, e.g. its object id, and that give the center's own
+/// key weight 1): each window column is weighted and summed once for the
+/// whole run. A pixel's result does not depend on the run it is part of.
+/// Returns the count of channels with no contribution.
+template<class Rule>
+int guided_mean_run(const SeparableSource& src, const Rule& rule, int xb, int xe, int y,
+                    GuidedScratch& scratch, float* out, std::ptrdiff_t stride)
+{
+    const Kernel1D& k = src.kernel;
+    const int r = k.radius;
+    const OIIO::ROI& reg = src.block().region;
+    const Span cols { std::max(reg.xbegin, xb - r), std::min(reg.xend, xe + r) };
+    const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
+    clear_columns(scratch, cols.size(), src.block().nchannels);
+    for (int qy = ys.begin; qy < ys.end; ++qy)
+        add_window_row(src, rule, xb, y, qy, cols, k.weights[size_t(qy - y + r)], scratch);
+    int empty = 0;
+    for (int x = xb; x < xe; ++x, out += stride)
+        empty += mean_from_columns(src, x, cols.begin, scratch, out);
+    return empty;
+}
+
+/// The weighted mean of pixel (x, y)'s viable finite neighbours, each
+/// weighted by the spatial kernel times the rule's guide weight (the center
+/// by its spatial weight alone), into `out`. `Rule` provides
+/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
+/// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
+/// `xs`, of center (px, py), into w[qx - xs.begin].
+/// Returns the count of channels with no contribution (set to 0).
+template<class Rule>
+int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
+                      GuidedScratch& scratch, float* out)
+{
+    return guided_mean_run(src, rule, x, x + 1, y, scratch, out, 0);
+}
+
 /// The guided weighted mean over the pixels of `strip` that `selected(x, y)`
 /// picks: pixels whose windows `rule.uniform_row` marks wholly viable with
 /// weight 1 from the separable fast path, the others neighbour by
-/// neighbour. Rows with no selected pixel are skipped. With `AllSelected`,
+/// neighbour, in runs of equal `rule.key(x, y)` when `Rule::keyed`. Rows with no selected pixel are skipped. With `AllSelected`,
 /// fast rows are written straight into `result` and only the other pixels
 /// are overwritten.
 template<bool AllSelected = false, class Rule, class Selected>
@@ -97,7 +145,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
     std::vector<uint8_t> uniform(static_cast<size_t>(w));
     std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
-    GuidedScratch scratch(src.block().nchannels);
+    GuidedScratch scratch(w + 2 * src.kernel.radius, src.block().nchannels);
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
@@ -126,14 +174,26 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
                 if (uniform[size_t(i)])
                     std::copy_n(fast_row.data() + size_t(i) * nc, nc,
                                 out_row + std::ptrdiff_t(i) * stride);
-        // The other pixels, found by memchr: few away from guide edges.
+        // The other pixels, found by memchr (few away from guide edges), in
+        // runs of one center key where the rule has keys.
         const uint8_t* u = uniform.data();
-        for (auto* p = static_cast<const uint8_t*>(std::memchr(u, 0, size_t(w))); p;
-             p = static_cast<const uint8_t*>(std::memchr(p + 1, 0, size_t(u + w - p - 1)))) {
-            const int i = int(p - u);
-            if (chosen[size_t(i)])
-                empty += guided_mean_pixel(src, rule, strip.xbegin + i, y, scratch,
-                                           out_row + std::ptrdiff_t(i) * stride);
+        int i = 0;
+        while (const void* p = std::memchr(u + i, 0, size_t(w - i))) {
+            i = int(static_cast<const uint8_t*>(p) - u);
+            int end = i + 1;
+            if (!chosen[size_t(i)]) {
+                i = end;
+                continue;
+            }
+            if constexpr (Rule::keyed)
+                while (end < w && !u[end] && chosen[size_t(end)]
+                       && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
+                    ++end;
+            empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
+                                     scratch, out_row + std::ptrdiff_t(i) * stride, stride);
+            i = end;
+            if (i >= w)
+                break;
         }
     }
     result.empty_windows += empty;

@@ -28,6 +28,8 @@ struct SameObjectWeightedByNormal {
     const GuidePlane<UnitNormal>& normals;
     UniformMap same_object_and_normal;
 
+    static constexpr bool keyed = false;  ///< the weights depend on the center's normal
+
     void uniform_row(int y, Span xs, uint8_t* out) const
     {
         same_object_and_normal.uniform_row(y, xs, 1, out);
