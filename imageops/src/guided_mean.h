@@ -145,6 +145,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
     std::vector<uint8_t> uniform(static_cast<size_t>(w));
     std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
+    std::vector<uint8_t> done(static_cast<size_t>(w));  // fast, or not chosen
     GuidedScratch scratch(w + 2 * src.kernel.radius, src.block().nchannels);
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
@@ -157,36 +158,39 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
                 continue;
         }
         rule.uniform_row(y, Span { strip.xbegin, strip.xend }, uniform.data());
-        int any_uniform = 0;
-        for (int i = 0; i < w; ++i)
-            any_uniform |= uniform[size_t(i)] &= chosen[size_t(i)];
-        float* out_row = result.pixel(strip.xbegin, y);
-        if (any_uniform) {
-            if (AllSelected)
-                fast.row(y, out_row, stride, fast_empty.data());
-            else
-                fast.row(y, fast_row.data(), nc, fast_empty.data());
-            for (int i = 0; i < w; ++i)
-                empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
+        int first = w, last = -1;  // the span of fast pixels
+        for (int i = 0; i < w; ++i) {
+            uniform[size_t(i)] &= chosen[size_t(i)];
+            done[size_t(i)] = uniform[size_t(i)] | !chosen[size_t(i)];
         }
-        if (!AllSelected && any_uniform)
-            for (int i = 0; i < w; ++i)
-                if (uniform[size_t(i)])
-                    std::copy_n(fast_row.data() + size_t(i) * nc, nc,
-                                out_row + std::ptrdiff_t(i) * stride);
-        // The other pixels, found by memchr (few away from guide edges), in
-        // runs of one center key where the rule has keys.
-        const uint8_t* u = uniform.data();
+        for (int i = 0; i < w && first == w; ++i)
+            first = uniform[size_t(i)] ? i : w;
+        for (int i = w - 1; i >= first && last < 0; --i)
+            last = uniform[size_t(i)] ? i : -1;
+        float* out_row = result.pixel(strip.xbegin, y);
+        if (last >= first) {
+            const Span fast_span { strip.xbegin + first, strip.xbegin + last + 1 };
+            if (AllSelected)
+                fast.row(y, fast_span, out_row, stride, fast_empty.data());
+            else
+                fast.row(y, fast_span, fast_row.data(), nc, fast_empty.data());
+            for (int i = first; i <= last; ++i)
+                empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
+            if (!AllSelected)
+                for (int i = first; i <= last; ++i)
+                    if (uniform[size_t(i)])
+                        std::copy_n(fast_row.data() + size_t(i) * nc, nc,
+                                    out_row + std::ptrdiff_t(i) * stride);
+        }
+        // The other chosen pixels, found by memchr (few away from guide
+        // edges), in runs of one center key where the rule has keys.
+        const uint8_t* d = done.data();
         int i = 0;
-        while (const void* p = std::memchr(u + i, 0, size_t(w - i))) {
-            i = int(static_cast<const uint8_t*>(p) - u);
+        while (const void* p = std::memchr(d + i, 0, size_t(w - i))) {
+            i = int(static_cast<const uint8_t*>(p) - d);
             int end = i + 1;
-            if (!chosen[size_t(i)]) {
-                i = end;
-                continue;
-            }
             if constexpr (Rule::keyed)
-                while (end < w && !u[end] && chosen[size_t(end)]
+                while (end < w && !d[end]
                        && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
                     ++end;
             empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,

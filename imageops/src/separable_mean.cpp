@@ -96,15 +96,15 @@ public:
     {
     }
 
-    /// `sums`: `width` pixels of (2 when masked) * nchannels values;
-    /// `geometric`: `width` weights, unused when masked. When `empty_per_pixel`
-    /// is given, it receives each pixel's count of empty channels.
-    int64_t write(const Sum* sums, const Sum* geometric, float* out, std::ptrdiff_t stride,
-                  uint8_t* empty_per_pixel)
+    /// `sums`: `width` pixels (at most the row's) of (2 when masked) *
+    /// nchannels values; `geometric`: `width` weights, unused when masked.
+    /// When `empty_per_pixel` is given, it receives each pixel's count of
+    /// empty channels.
+    int64_t write(const Sum* sums, const Sum* geometric, int width, float* out,
+                  std::ptrdiff_t stride, uint8_t* empty_per_pixel)
     {
         const int nc      = m_nc;
-        const size_t n    = m_quotients.size();
-        const int width   = int(n / size_t(nc));
+        const size_t n    = size_t(width) * nc;
         int64_t empty     = 0;
         if (m_masked) {
             for (int x = 0; x < width; ++x, sums += 2 * nc, out += stride) {
@@ -123,7 +123,7 @@ public:
         }
         if (empty_per_pixel)
             std::fill(empty_per_pixel, empty_per_pixel + width, uint8_t(0));
-        expand(geometric);
+        expand(geometric, width);
         float* q = m_quotients.data();
         for (size_t i = 0; i < n; ++i)  // every geometric weight is > 0
             q[i] = float(sums[i] * m_reciprocals[i]);
@@ -140,14 +140,14 @@ public:
 private:
     // One reciprocal weight per value, rebuilt only when the row's weights
     // change (they are the same for every row whose window is not clipped).
-    void expand(const Sum* geometric)
+    void expand(const Sum* geometric, int width)
     {
-        const size_t width = m_quotients.size() / size_t(m_nc);
-        if (m_weights.size() == width && std::equal(m_weights.begin(), m_weights.end(), geometric))
+        if (m_weights.size() == size_t(width)
+            && std::equal(m_weights.begin(), m_weights.end(), geometric))
             return;
         m_weights.assign(geometric, geometric + width);
-        m_reciprocals.resize(m_quotients.size());
-        for (size_t x = 0; x < width; ++x)
+        m_reciprocals.resize(size_t(width) * m_nc);
+        for (size_t x = 0; x < size_t(width); ++x)
             std::fill_n(m_reciprocals.begin() + std::ptrdiff_t(x * m_nc), m_nc,
                         Sum(1) / geometric[x]);
     }
@@ -175,20 +175,23 @@ public:
     {
     }
 
-    int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
+    int64_t row(int y, Span xs, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
     {
         const int start = m_col_y == no_row
                               ? restart_at_or_before(y, m_src.origin_y, m_interval)
                               : m_col_y + 1;
         for (int yy = start; yy <= y; ++yy)
             advance_columns(yy);
-        horizontal();
+        horizontal(xs);
         const ROI& reg    = m_src.block().region;
         const double rows = double(clip_window(y, m_r, reg.ybegin, reg.yend).size());
-        for (int x = m_strip.xbegin; x < m_strip.xend; ++x)
-            m_weights[size_t(x - m_strip.xbegin)]
+        for (int x = xs.begin; x < xs.end; ++x)
+            m_weights[size_t(x - xs.begin)]
                 = rows * double(clip_window(x, m_r, reg.xbegin, reg.xend).size());
-        return m_means.write(m_row.data(), m_weights.data(), out, stride, empty_per_pixel);
+        const size_t first = size_t(xs.begin - m_strip.xbegin);
+        return m_means.write(m_row.data() + first * m_channels, m_weights.data(), xs.size(),
+                             out + std::ptrdiff_t(first) * stride, stride,
+                             empty_per_pixel ? empty_per_pixel + first : nullptr);
     }
 
 private:
@@ -226,30 +229,32 @@ private:
         m_col_y = y;
     }
 
-    void horizontal()
+    void horizontal(Span xs)
     {
         switch (m_channels) {
-        case 1: return horizontal_for<1>();
-        case 2: return horizontal_for<2>();
-        case 3: return horizontal_for<3>();
-        case 4: return horizontal_for<4>();
-        case 6: return horizontal_for<6>();
-        case 8: return horizontal_for<8>();
-        default: return horizontal_for<0>();
+        case 1: return horizontal_for<1>(xs);
+        case 2: return horizontal_for<2>(xs);
+        case 3: return horizontal_for<3>(xs);
+        case 4: return horizontal_for<4>(xs);
+        case 6: return horizontal_for<6>(xs);
+        case 8: return horizontal_for<8>(xs);
+        default: return horizontal_for<0>(xs);
         }
     }
 
-    // Sliding row sums, from scratch at each restart point; `FixedC` is the
-    // channel count when known at compile time (0: m_channels).
+    // Sliding row sums over `xs`, from scratch at each restart point;
+    // `FixedC` is the channel count when known at compile time (0:
+    // m_channels).
     template<int FixedC>
-    void horizontal_for()
+    void horizontal_for(Span xs)
     {
         const ROI& reg = m_src.block().region;
         const int C    = FixedC ? FixedC : m_channels;
         const int r    = m_r;
         double* s      = m_sum.data();
-        for (int xa = m_xb; xa < m_strip.xend; xa += m_interval) {
-            const int xe    = std::min(xa + m_interval, m_strip.xend);
+        const int first = restart_at_or_before(xs.begin, m_src.origin_x, m_interval);
+        for (int xa = std::max(m_xb, first); xa < xs.end; xa += m_interval) {
+            const int xe    = std::min(xa + m_interval, xs.end);
             const Span span = clip_window(xa, r, reg.xbegin, reg.xend);
             for (int c = 0; c < C; ++c)
                 s[c] = 0.0;
@@ -271,7 +276,7 @@ private:
                             s[c] -= v[c];
                     }
                 }
-                if (x >= m_strip.xbegin) {
+                if (x >= xs.begin) {
                     double* o = m_row.data() + size_t(x - m_strip.xbegin) * C;
                     for (int c = 0; c < C; ++c)
                         o[c] = s[c];
@@ -307,75 +312,79 @@ public:
     {
     }
 
-    int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
+    int64_t row(int y, Span xs, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel)
     {
         const ROI& reg = m_src.block().region;
         const Span ys  = clip_window(y, m_r, reg.ybegin, reg.yend);
-        vertical(y, ys);
-        horizontal();
+        vertical(y, ys, Span { std::max(m_x0, xs.begin - m_r), std::min(m_x1, xs.end + m_r) });
+        horizontal(xs);
         const float* w = m_src.kernel.weights.data();
         float column_weight = 0.0f;  // what an all-ones channel sums to
         for (int j = ys.begin; j < ys.end; ++j)
             column_weight += w[j - y + m_r] * 1.0f;
         if (!m_src.masked)
-            geometric_weights(column_weight);
-        return m_means.write(m_row.data(), m_weights.data(), out, stride, empty_per_pixel);
+            geometric_weights(column_weight, xs);
+        const size_t first = size_t(xs.begin - m_strip.xbegin);
+        return m_means.write(m_row.data() + first * m_channels, m_weights.data(), xs.size(),
+                             out + std::ptrdiff_t(first) * stride, stride,
+                             empty_per_pixel ? empty_per_pixel + first : nullptr);
     }
 
 private:
     // What an all-ones channel sums to at each pixel, in the order the
     // sums are taken; the same for every pixel whose window is not clipped.
-    void geometric_weights(float column_weight)
+    void geometric_weights(float column_weight, Span xs)
     {
         const ROI& reg = m_src.block().region;
         const float* w = m_src.kernel.weights.data();
         float interior = 0.0f;
         for (int i = 0; i <= 2 * m_r; ++i)
             interior += w[i] * column_weight;
-        for (int x = m_strip.xbegin; x < m_strip.xend; ++x) {
-            const Span xs = clip_window(x, m_r, reg.xbegin, reg.xend);
-            float weight  = 0.0f;
-            if (xs.size() == 2 * m_r + 1)
+        for (int x = xs.begin; x < xs.end; ++x) {
+            const Span window = clip_window(x, m_r, reg.xbegin, reg.xend);
+            float weight      = 0.0f;
+            if (window.size() == 2 * m_r + 1)
                 weight = interior;
             else
-                for (int i = xs.begin; i < xs.end; ++i)
+                for (int i = window.begin; i < window.end; ++i)
                     weight += w[i - x + m_r] * column_weight;
-            m_weights[size_t(x - m_strip.xbegin)] = weight;
+            m_weights[size_t(x - xs.begin)] = weight;
         }
     }
 
-    void vertical(int y, Span ys)
+    // The weighted column sums of columns `cols` for row y.
+    void vertical(int y, Span ys, Span cols)
     {
         const float* w = m_src.kernel.weights.data();
-        const size_t n = m_col.size();
-        float* c       = m_col.data();
+        const size_t n = size_t(cols.size()) * m_channels;
+        float* c       = m_col.data() + size_t(cols.begin - m_x0) * m_channels;
         std::fill(c, c + n, 0.0f);
         for (int j = ys.begin; j < ys.end; ++j) {
             const float wj = w[j - y + m_r];
-            const float* p = m_src.block().pixel(m_x0, j);
+            const float* p = m_src.block().pixel(cols.begin, j);
             for (size_t i = 0; i < n; ++i)
                 c[i] += wj * p[i];
         }
     }
 
-    void horizontal()
+    void horizontal(Span xs)
     {
         const ROI& reg = m_src.block().region;
         const float* w = m_src.kernel.weights.data();
         const int C = m_channels, r = m_r;
-        const int in_begin = std::clamp(reg.xbegin + r, m_strip.xbegin, m_strip.xend);
-        const int in_end   = std::clamp(reg.xend - r, in_begin, m_strip.xend);
+        const int in_begin = std::clamp(reg.xbegin + r, xs.begin, xs.end);
+        const int in_end   = std::clamp(reg.xend - r, in_begin, xs.end);
         auto edge_pixel = [&](int x) {
-            const Span xs = clip_window(x, r, reg.xbegin, reg.xend);
-            float* o      = m_row.data() + size_t(x - m_strip.xbegin) * C;
+            const Span window = clip_window(x, r, reg.xbegin, reg.xend);
+            float* o          = m_row.data() + size_t(x - m_strip.xbegin) * C;
             std::fill(o, o + C, 0.0f);
-            for (int i = xs.begin; i < xs.end; ++i) {
+            for (int i = window.begin; i < window.end; ++i) {
                 const float* v = m_col.data() + size_t(i - m_x0) * C;
                 for (int c = 0; c < C; ++c)
                     o[c] += w[i - x + r] * v[c];
             }
         };
-        for (int x = m_strip.xbegin; x < in_begin; ++x)
+        for (int x = xs.begin; x < in_begin; ++x)
             edge_pixel(x);
         if (in_end > in_begin) {
             float* o       = m_row.data() + size_t(in_begin - m_strip.xbegin) * C;
@@ -388,7 +397,7 @@ private:
                     o[k] += wi * v[k];
             }
         }
-        for (int x = in_end; x < m_strip.xend; ++x)
+        for (int x = in_end; x < xs.end; ++x)
             edge_pixel(x);
     }
 
@@ -417,7 +426,7 @@ struct SeparableMeanRows::Impl {
 };
 
 SeparableMeanRows::SeparableMeanRows(const SeparableSource& source, const ROI& strip)
-    : m_impl(new Impl(source, strip))
+    : m_strip(strip), m_impl(new Impl(source, strip))
 {
 }
 
@@ -426,8 +435,14 @@ SeparableMeanRows::~SeparableMeanRows() = default;
 int64_t SeparableMeanRows::row(int y, float* out, std::ptrdiff_t stride,
                                uint8_t* empty_per_pixel)
 {
-    return m_impl->sliding ? m_impl->sliding->row(y, out, stride, empty_per_pixel)
-                       : m_impl->taps->row(y, out, stride, empty_per_pixel);
+    return row(y, Span { m_strip.xbegin, m_strip.xend }, out, stride, empty_per_pixel);
+}
+
+int64_t SeparableMeanRows::row(int y, Span xs, float* out, std::ptrdiff_t stride,
+                               uint8_t* empty_per_pixel)
+{
+    return m_impl->sliding ? m_impl->sliding->row(y, xs, out, stride, empty_per_pixel)
+                           : m_impl->taps->row(y, xs, out, stride, empty_per_pixel);
 }
 
 void separable_mean_strip(const SeparableSource& source, const ROI& strip,

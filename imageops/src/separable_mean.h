@@ -9,6 +9,7 @@
 
 #include "operation.h"
 #include "pixel_block.h"
+#include "window.h"
 
 #include <cstdint>
 #include <memory>
@@ -80,7 +81,13 @@ public:
     /// count of channels whose window held no finite value.
     int64_t row(int y, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel);
 
+    /// `row` for the pixels `xs` (inside the strip) only: `out` and
+    /// `empty_per_pixel` still start at the strip's first pixel, and the
+    /// other pixels are left alone.
+    int64_t row(int y, Span xs, float* out, std::ptrdiff_t stride, uint8_t* empty_per_pixel);
+
 private:
+    OIIO::ROI m_strip;
     struct Impl;
     std::unique_ptr<Impl> m_impl;
 };
