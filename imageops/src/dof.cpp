@@ -21,9 +21,11 @@ struct FocusMap {
     std::vector<int> sides;
     int largest = 1;
 
-    int at(int x, int y) const
+    int at(int x, int y) const { return *from(x, y); }
+    /// The sides from (x, y) on along row y.
+    const int* from(int x, int y) const
     {
-        return sides[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)];
+        return sides.data() + size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin);
     }
 };
 
@@ -170,8 +172,12 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
         for (size_t i = 0; i < sides.size(); ++i) {
             const int side = sides[i];
             guided_mean_strip(sources[i], rules[i],
-                              [&](int x, int y) { return map.at(x, y) == side; }, strip,
-                              result);
+                              [&](int y, Span xs, uint8_t* out) {
+                                  const int* row = map.from(xs.begin, y);
+                                  for (int j = 0; j < xs.size(); ++j)
+                                      out[j] = row[j] == side;
+                              },
+                              strip, result);
         }
     });
     return finish_result(op, dst, result);

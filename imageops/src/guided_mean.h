@@ -129,14 +129,15 @@ int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y
     return guided_mean_run(src, rule, x, x + 1, y, scratch, out, 0);
 }
 
-/// The guided weighted mean over the pixels of `strip` that `selected(x, y)`
-/// picks: pixels whose windows `rule.uniform_row` marks wholly viable with
+/// The guided weighted mean over the pixels of `strip` that `select` picks
+/// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
+/// to filter, 0 for the others): pixels whose windows `rule.uniform_row` marks wholly viable with
 /// weight 1 from the separable fast path, the others neighbour by
 /// neighbour, in runs of equal `rule.key(x, y)` when `Rule::keyed`. Rows with no selected pixel are skipped. With `AllSelected`,
 /// fast rows are written straight into `result` and only the other pixels
 /// are overwritten.
-template<bool AllSelected = false, class Rule, class Selected>
-void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& selected,
+template<bool AllSelected = false, class Rule, class Select>
+void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& select,
                        const OIIO::ROI& strip, ResultPixels& result)
 {
     const int nc = src.nchannels, w = strip.width();
@@ -151,9 +152,10 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Selected&& 
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
         if constexpr (!AllSelected) {
-            bool any_selected = false;
-            for (int x = strip.xbegin; x < strip.xend; ++x)
-                any_selected |= chosen[size_t(x - strip.xbegin)] = selected(x, y);
+            select(y, Span { strip.xbegin, strip.xend }, chosen.data());
+            int any_selected = 0;
+            for (int i = 0; i < w; ++i)
+                any_selected |= chosen[size_t(i)];
             if (!any_selected)
                 continue;
         }

@@ -54,8 +54,7 @@ bool run_window_filter(const char* op, Reduction reduction, OIIO::ImageBuf& dst,
         if constexpr (std::is_same_v<Rule, AllViable>)
             separable_mean_strip(source, strip, result);
         else
-            guided_mean_strip<true>(source, rule, [](int, int) { return true; }, strip,
-                                    result);
+            guided_mean_strip<true>(source, rule, [](int, Span, uint8_t*) {}, strip, result);
     });
     return finish_result(op, dst, result);
 }
