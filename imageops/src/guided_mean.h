@@ -160,22 +160,25 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
                 continue;
         }
         rule.uniform_row(y, Span { strip.xbegin, strip.xend }, uniform.data());
-        int first = w, last = -1;  // the span of fast pixels
         for (int i = 0; i < w; ++i) {
             uniform[size_t(i)] &= chosen[size_t(i)];
             done[size_t(i)] = uniform[size_t(i)] | !chosen[size_t(i)];
         }
-        for (int i = 0; i < w && first == w; ++i)
-            first = uniform[size_t(i)] ? i : w;
-        for (int i = w - 1; i >= first && last < 0; --i)
-            last = uniform[size_t(i)] ? i : -1;
         float* out_row = result.pixel(strip.xbegin, y);
-        if (last >= first) {
-            const Span fast_span { strip.xbegin + first, strip.xbegin + last + 1 };
+        // The fast pixels in segments [first, last]: a gap wider than a
+        // window's reach (which every segment sums again) starts a new one.
+        const int gap = 2 * src.kernel.radius + 16;
+        for (int first = 0; first < w; ++first) {
+            if (!uniform[size_t(first)])
+                continue;
+            int last = first;
+            for (int i = first + 1; i < w && i - last <= gap; ++i)
+                last = uniform[size_t(i)] ? i : last;
+            const Span segment { strip.xbegin + first, strip.xbegin + last + 1 };
             if (AllSelected)
-                fast.row(y, fast_span, out_row, stride, fast_empty.data());
+                fast.row(y, segment, out_row, stride, fast_empty.data());
             else
-                fast.row(y, fast_span, fast_row.data(), nc, fast_empty.data());
+                fast.row(y, segment, fast_row.data(), nc, fast_empty.data());
             for (int i = first; i <= last; ++i)
                 empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
             if (!AllSelected)
@@ -183,6 +186,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
                     if (uniform[size_t(i)])
                         std::copy_n(fast_row.data() + size_t(i) * nc, nc,
                                     out_row + std::ptrdiff_t(i) * stride);
+            first = last;
         }
         // The other chosen pixels, found by memchr (few away from guide
         // edges), in runs of one center key where the rule has keys.
