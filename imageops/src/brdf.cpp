@@ -61,7 +61,7 @@ bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const Image
     const SameObjectAndReflection rule {
         ids, reflect,
         uniform_map(key_changes(ids.region, nthreads,
-                                [&](size_t i, size_t j) {
+                                [id, rid](size_t i, size_t j) {
                                     return uint8_t((id[i] != id[j]) | (rid[i] != rid[j]) << 1);
                                 }),
                     roi, size / 2, nthreads)

@@ -98,8 +98,9 @@ KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ)
 {
     KeyChanges changes { region, LargeVector<uint8_t>(region.npixels()) };
     uint8_t* flags = changes.flags.data();
-    parallel_rows(region, nthreads, [&, flags](int ay) {
-        // Local copies: byte stores could otherwise alias the bounds.
+    parallel_rows(region, nthreads, [&region, flags, differ](int ay) {
+        // Local copies (of `differ` too): byte stores could otherwise alias
+        // the bounds and the planes `differ` reads.
         const int w = region.width(), h = region.height(), y = ay - region.ybegin;
         uint8_t* out    = flags + size_t(y) * w;
         const size_t row = size_t(y) * w;
