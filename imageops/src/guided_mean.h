@@ -1,7 +1,8 @@
 // guided_mean.h: the one window walker for weighted-mean filters. A filter
 // is a rule: which neighbours are viable and with what guide weight. Pixels
 // whose whole window is viable with weight 1 take the separable fast path;
-// the others are summed neighbour by neighbour.
+// the others are summed window column by window column, each column once
+// for a run of pixels whose weights depend on one center key (object id).
 #pragma once
 
 #include "separable_mean.h"

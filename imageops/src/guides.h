@@ -1,7 +1,7 @@
 // guides.h: the auxiliary buffers (object id, reflect id, normal, depth)
 // checked against the beauty's ROI and normalised once into contiguous
-// planes the hot loops read: ids as whole numbers, unit normals, depths with
-// "infinitely far" made explicit.
+// planes the hot loops read: ids as 32-bit whole numbers, unit normals,
+// depths with "infinitely far" made explicit.
 #pragma once
 
 #include "large_buffer.h"
