@@ -184,6 +184,25 @@ TEST_P(GuidedFilters, MatchSpecForSizes1To11)
         expect_matches_spec(GetParam(), beauty, g, size);
 }
 
+TEST_P(GuidedFilters, MatchSpecForWideWindows)
+{
+    // Wide enough for sliding box sums, fast rows in segments and long runs
+    // of edge pixels.
+    const int w = 96, h = 71;
+    const ImageBuf beauty = testimg::random_image(w, h, 3, 40, 0.0f, 5.0f);
+    std::vector<float> ids(size_t(w) * h), reflect(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {  // large objects: a slanted edge and a band
+            ids[size_t(y) * w + x]     = float(x + y / 3 < 50 ? 1 : y > 45 ? 2 : 3);
+            reflect[size_t(y) * w + x] = x > 60 && y < 30 ? float((x / 12) % 2) : -1.0f;
+        }
+    Guides g = make_guides(w, h, 41);
+    g.ids     = testimg::from_values(w, h, 1, TypeDesc::FLOAT, 0, 0, ids);
+    g.reflect = testimg::from_values(w, h, 1, TypeDesc::FLOAT, 0, 0, reflect);
+    for (int size : { 13, 21 })
+        expect_matches_spec(GetParam(), beauty, g, size);
+}
+
 TEST_P(GuidedFilters, IdsStoredAsFloatHalfAndUint32)
 {
     const ImageBuf beauty = testimg::random_image(40, 33, 3, 3);

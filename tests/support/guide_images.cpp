@@ -12,8 +12,6 @@ namespace testimg {
 using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 
-namespace {
-
 ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format, int x0,
                      int y0, const std::vector<float>& values)
 {
@@ -24,8 +22,6 @@ ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format
     img.set_pixels(img.roi(), OIIO::TypeDesc::FLOAT, values.data());
     return img;
 }
-
-}  // namespace
 
 ImageBuf block_ids(int width, int height, uint32_t seed, OIIO::TypeDesc format, int x0,
                    int y0)

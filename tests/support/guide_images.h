@@ -8,8 +8,14 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace testimg {
+
+/// An image of `width` x `height` pixels of `nchannels` channels stored as
+/// `format`, origin (x0, y0), from row-major float `values`.
+OIIO::ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format,
+                           int x0, int y0, const std::vector<float>& values);
 
 /// One-channel ids: rectangular blocks of a few labels, plus stray single
 /// pixels, stored as `format` (float, half, uint32...), origin (x0, y0).
