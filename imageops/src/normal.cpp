@@ -5,6 +5,8 @@
 #include "guide_rules.h"
 #include "window_filter.h"
 
+#include <tuple>
+
 namespace mcdenoise {
 
 using OIIO::ImageBuf;
@@ -28,7 +30,14 @@ struct SameObjectWeightedByNormal {
     const GuidePlane<UnitNormal>& normals;
     UniformMap same_object_and_normal;
 
-    static constexpr bool keyed = false;  ///< the weights depend on the center's normal
+    /// The weights depend on the center's id and normal alone: equal ones
+    /// share window columns (flat surfaces next to an edge).
+    static constexpr bool keyed = true;
+    std::tuple<Id, float, float, float> key(int x, int y) const
+    {
+        const UnitNormal& n = normals.at(x, y);
+        return { ids.at(x, y), n.x, n.y, n.z };
+    }
 
     void uniform_row(int y, Span xs, uint8_t* out) const
     {
