@@ -22,7 +22,7 @@ struct SameObjectAndReflection {
 
     bool specular(int x, int y) const { return reflect.at(x, y) >= 0; }
 
-    static constexpr bool keyed = true;  ///< the weights depend on the center's ids alone
+    /// The weights depend on the center's ids alone.
     int64_t key(int x, int y) const
     {
         return int64_t(ids.at(x, y)) * (int64_t(1) << 32) + int64_t(reflect.at(x, y));

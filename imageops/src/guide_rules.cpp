@@ -27,7 +27,8 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
         const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
         for (int yy = ys.begin; yy < ys.end; ++yy) {
             const uint8_t keep = yy < y + r ? uint8_t(0xff) : right_pairs;
-            const uint8_t* f = changes.flags.data() + size_t(yy - reg.ybegin) * w + (x0 - reg.xbegin);
+            const uint8_t* f
+                = changes.flags.data() + size_t(yy - reg.ybegin) * w + (x0 - reg.xbegin);
             for (int i = 0; i < nx; ++i)
                 any[i] |= f[i] & keep;
         }

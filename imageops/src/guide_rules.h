@@ -73,7 +73,7 @@ struct SameObject {
     const IdPlane& ids;
     UniformMap uniform_windows;
 
-    static constexpr bool keyed = true;  ///< the weights depend on the center's id alone
+    /// The weights depend on the center's id alone.
     Id key(int x, int y) const { return ids.at(x, y); }
 
     void uniform_row(int y, Span xs, uint8_t* out) const

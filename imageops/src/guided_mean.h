@@ -13,7 +13,7 @@
 
 namespace mcdenoise {
 
-/// Working memory of `guided_mean_pixel` and `guided_mean_run` for runs of
+/// Working memory of `guided_mean_run` for runs of
 /// up to `span` columns of `block_channels` values each.
 struct GuidedScratch {
     GuidedScratch(int span, int block_channels)
@@ -91,13 +91,18 @@ inline int mean_from_columns(const SeparableSource& src, int x, int first,
     return empty;
 }
 
-/// The weighted mean (as `guided_mean_pixel`) of the pixels [xb, xe) of row y, written `stride`
-/// floats apart from `out`, whose guide weights are the same function of
-/// the neighbour for every pixel of the run (rules whose weights depend on
-/// a key of the center, e.g. its object id, and that give the center's own
-/// key weight 1): each window column is weighted and summed once for the
-/// whole run. A pixel's result does not depend on the run it is part of.
-/// Returns the count of channels with no contribution.
+/// The weighted means of the pixels [xb, xe) of row y (written `stride`
+/// floats apart from `out`): each pixel's viable finite neighbours weighted
+/// by the spatial kernel times the rule's guide weight (the center by its
+/// spatial weight alone). `Rule` provides
+/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
+/// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
+/// `xs`, of center (px, py), into w[qx - xs.begin]. Every pixel of the run
+/// must share the center's `rule.key`, so the weights are the same function
+/// of the neighbour for all of them (and a pixel of the center's key weighs
+/// 1): each window column is then weighted and summed once for the whole
+/// run. A pixel's result does not depend on the run it is part of.
+/// Returns the count of channels with no contribution (set to 0).
 template<class Rule>
 int guided_mean_run(const SeparableSource& src, const Rule& rule, int xb, int xe, int y,
                     GuidedScratch& scratch, float* out, std::ptrdiff_t stride)
@@ -116,27 +121,14 @@ int guided_mean_run(const SeparableSource& src, const Rule& rule, int xb, int xe
     return empty;
 }
 
-/// The weighted mean of pixel (x, y)'s viable finite neighbours, each
-/// weighted by the spatial kernel times the rule's guide weight (the center
-/// by its spatial weight alone), into `out`. `Rule` provides
-/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`:
-/// the guide weight, 0 where not viable, of each neighbour (qx, qy), qx in
-/// `xs`, of center (px, py), into w[qx - xs.begin].
-/// Returns the count of channels with no contribution (set to 0).
-template<class Rule>
-int guided_mean_pixel(const SeparableSource& src, const Rule& rule, int x, int y,
-                      GuidedScratch& scratch, float* out)
-{
-    return guided_mean_run(src, rule, x, x + 1, y, scratch, out, 0);
-}
-
 /// The guided weighted mean over the pixels of `strip` that `select` picks
 /// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
-/// to filter, 0 for the others): pixels whose windows `rule.uniform_row` marks wholly viable with
-/// weight 1 from the separable fast path, the others neighbour by
-/// neighbour, in runs of equal `rule.key(x, y)` when `Rule::keyed`. Rows with no selected pixel are skipped. With `AllSelected`,
-/// fast rows are written straight into `result` and only the other pixels
-/// are overwritten.
+/// to filter, 0 for the others). Pixels whose windows `rule.uniform_row`
+/// marks wholly viable with weight 1 come from the separable fast path; the
+/// others from `guided_mean_run`, in runs of equal `rule.key(x, y)` (a
+/// value whose equality implies equal guide weights). Rows with no selected
+/// pixel are skipped. With `AllSelected`, fast rows are written straight
+/// into `result` and only the other pixels are overwritten.
 template<bool AllSelected = false, class Rule, class Select>
 void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& select,
                        const OIIO::ROI& strip, ResultPixels& result)
@@ -196,10 +188,9 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
         while (const void* p = std::memchr(d + i, 0, size_t(w - i))) {
             i = int(static_cast<const uint8_t*>(p) - d);
             int end = i + 1;
-            if constexpr (Rule::keyed)
-                while (end < w && !d[end]
-                       && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
-                    ++end;
+            while (end < w && !d[end]
+                   && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
+                ++end;
             empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
                                      scratch, out_row + std::ptrdiff_t(i) * stride, stride);
             i = end;

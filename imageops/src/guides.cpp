@@ -82,7 +82,8 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
             for (int y = part.ybegin; y < part.yend; ++y, in += row_stride) {
                 T* out = plane.values.data() + plane.index(part.xbegin, y);
                 const bool row_inside = y >= dw.ybegin && y < dw.yend;
-                const int x0 = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
+                const int x0
+                    = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
                 const int x1 = row_inside ? std::clamp(dw.xend, x0, part.xend) : part.xend;
                 const Raw* v = in;
                 int x = part.xbegin;
@@ -213,7 +214,8 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
 bool load_depths(const char* op, ImageBuf& dst, const ImageBuf& depth, const ROI& region,
                  int nthreads, GuidePlane<float>& plane)
 {
-    return load_plane<float, float>(op, dst, depth, region, nthreads, plane, [](const float* d, bool inside) {
+    return load_plane<float, float>(op, dst, depth, region, nthreads, plane,
+                                    [](const float* d, bool inside) {
                                         const bool far = !inside || !std::isfinite(*d)
                                                          || *d >= infinitely_far;
                                         return far ? std::numeric_limits<float>::infinity()

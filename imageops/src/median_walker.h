@@ -45,9 +45,10 @@ bool load_median_source(const char* op, OIIO::ImageBuf& dst,
 
 /// A viability rule for the median walker. `Rule` provides
 /// `void uniform_row(int y, Span xs, uint8_t* out) const`: out[x - xs.begin]
-/// is 1 where every pixel of (x, y)'s clipped window is viable; and `void row_weights(int px, int py, int qy, Span xs,
-/// float* w) const`: for each neighbour (qx, qy), qx in `xs`, of center
-/// (px, py), w[qx - xs.begin] is 0 where it is not viable.
+/// is 1 where every pixel of (x, y)'s clipped window is viable; and
+/// `void row_weights(int px, int py, int qy, Span xs, float* w) const`: for
+/// each neighbour (qx, qy), qx in `xs`, of center (px, py), w[qx - xs.begin]
+/// is 0 where it is not viable.
 /// Computes the median filter of one strip into `result`.
 template<class Rule>
 void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& strip,

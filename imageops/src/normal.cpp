@@ -32,7 +32,6 @@ struct SameObjectWeightedByNormal {
 
     /// The weights depend on the center's id and normal alone: equal ones
     /// share window columns (flat surfaces next to an edge).
-    static constexpr bool keyed = true;
     std::tuple<Id, float, float, float> key(int x, int y) const
     {
         const UnitNormal& n = normals.at(x, y);

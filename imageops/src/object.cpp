@@ -20,8 +20,9 @@ bool object_filter(const char* op, Reduction reduction, ImageBuf& dst,
     if (!check_window_op(op, dst, beauty, size, roi)
         || !load_window_ids(op, dst, beauty, object_id, roi, size, nthreads, ids))
         return false;
-    return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id }, size,
-                             same_object_rule(ids, id_changes(ids, nthreads), roi, size, nthreads), roi, nthreads);
+    const SameObject rule = same_object_rule(ids, id_changes(ids, nthreads), roi, size, nthreads);
+    return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id }, size, rule, roi,
+                             nthreads);
 }
 
 }  // namespace
