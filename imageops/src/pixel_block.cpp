@@ -32,13 +32,30 @@ bool can_view_in_place(const ImageBuf& img, const ROI& region)
            && img.scanline_stride() % std::ptrdiff_t(sizeof(float)) == 0;
 }
 
-// 1 if `v` is NaN or infinite (all exponent bits set), else 0; a form the
-// compiler vectorises.
-inline uint32_t is_nonfinite_bits(float v)
+// 1 if the exponent field of `v` is at least `exponent_bits` (shifted into
+// place), else 0; a form the compiler vectorises.
+inline uint32_t exponent_at_least(float v, uint32_t exponent_bits)
 {
     uint32_t bits;
     std::memcpy(&bits, &v, sizeof bits);
-    return (bits & 0x7f800000u) == 0x7f800000u;
+    return (bits & 0x7f800000u) >= exponent_bits;
+}
+
+// True if any value of `block` has an exponent field of at least
+// `exponent_bits`.
+bool any_exponent_at_least(const PixelBlock& block, uint32_t exponent_bits, int nthreads)
+{
+    const std::ptrdiff_t n = std::ptrdiff_t(block.width()) * block.nchannels;
+    std::atomic<bool> found { false };
+    parallel_rows(block.region, nthreads, [&](int y) {
+        const float* row = block.row(y);
+        uint32_t hit     = 0;
+        for (std::ptrdiff_t i = 0; i < n; ++i)
+            hit |= exponent_at_least(row[i], exponent_bits);
+        if (hit)
+            found = true;
+    });
+    return found;
 }
 
 // An owned block with `nchannels` channels over `region`.
@@ -81,17 +98,13 @@ bool read_beauty(const char* op, ImageBuf& dst, const ImageBuf& beauty, const RO
 
 bool has_nonfinite(const PixelBlock& block, int nthreads)
 {
-    const std::ptrdiff_t n = std::ptrdiff_t(block.width()) * block.nchannels;
-    std::atomic<bool> found { false };
-    parallel_rows(block.region, nthreads, [&](int y) {
-        const float* row = block.row(y);
-        uint32_t bad     = 0;
-        for (std::ptrdiff_t i = 0; i < n; ++i)
-            bad |= is_nonfinite_bits(row[i]);
-        if (bad)
-            found = true;
-    });
-    return found;
+    return any_exponent_at_least(block, 0x7f800000u, nthreads);
+}
+
+bool needs_finite_mask(const PixelBlock& block, int nthreads)
+{
+    static_assert(max_summed_magnitude == 0x1p100f, "the exponent below is 2^100's");
+    return any_exponent_at_least(block, uint32_t(127 + 100) << 23, nthreads);
 }
 
 PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
@@ -103,9 +116,8 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
         float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
         for (int x = 0; x < src.width(); ++x, in += nc, dst += 2 * nc)
             for (int c = 0; c < nc; ++c) {
-                const bool finite = std::isfinite(in[c]);
-                dst[c]      = finite ? in[c] : 0.0f;
-                dst[nc + c] = finite ? 1.0f : 0.0f;
+                dst[c]      = summable(in[c]);
+                dst[nc + c] = std::isfinite(in[c]) ? 1.0f : 0.0f;
             }
     });
     return out;

@@ -5,6 +5,8 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -48,13 +50,30 @@ bool load_block(const OIIO::ImageBuf& img, OIIO::ROI region, PixelBlock& block);
 bool read_beauty(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
                  const OIIO::ROI& region, PixelBlock& block);
 
+/// The largest magnitude a window sum takes from a finite value: larger ones
+/// (a broken sample, far beyond any radiance) are clamped to it, so a sum of
+/// up to 2^27 of them with weights of at most 1 still fits in a float and a
+/// mean of finite values stays finite. Medians see the values unclamped.
+constexpr float max_summed_magnitude = 0x1p100f;
+
+/// What a window sum takes from `v`: `v` clamped to +-max_summed_magnitude,
+/// or 0 when it is NaN or infinite.
+inline float summable(float v)
+{
+    return std::isfinite(v) ? std::clamp(v, -max_summed_magnitude, max_summed_magnitude) : 0.0f;
+}
+
 /// True if any value of `block` is NaN or infinite.
 bool has_nonfinite(const PixelBlock& block, int nthreads);
 
-/// A copy of `src` with twice the channels: each finite value as it is (0 in
-/// place of a non-finite one), then for each channel 1 where the value is
-/// finite and 0 where not. Summing both halves with the same weights gives
-/// a masked numerator and the weights that contributed.
+/// True if any value of `block` is NaN, infinite or beyond
+/// max_summed_magnitude: sums of it must read `with_finite_mask`.
+bool needs_finite_mask(const PixelBlock& block, int nthreads);
+
+/// A copy of `src` with twice the channels: each value as a sum takes it
+/// (`summable`), then for each channel 1 where the value is finite and 0
+/// where not. Summing both halves with the same weights gives a masked
+/// numerator and the weights that contributed.
 PixelBlock with_finite_mask(const PixelBlock& src, int nthreads);
 
 /// A block like `src` holding 1 where its value is non-finite, 0 elsewhere.

@@ -55,7 +55,7 @@ void make_separable_source(PixelBlock block, const ROI& bounds, Kernel1D kernel,
     source.origin_x  = bounds.xbegin;
     source.origin_y  = bounds.ybegin;
     source.nchannels = block.nchannels;
-    source.masked    = has_nonfinite(block, nthreads);
+    source.masked    = needs_finite_mask(block, nthreads);
     source.pixels    = std::make_shared<const PixelBlock>(
         source.masked ? with_finite_mask(block, nthreads) : std::move(block));
 }

@@ -37,8 +37,8 @@ constexpr int max_direct_box_size = 11;
 Kernel1D binomial_kernel(int size);
 
 /// The beauty as the separable mean reads it: the pixels the kernel reaches
-/// from the ROI, with a finite mask appended to every pixel when any value
-/// is non-finite.
+/// from the ROI, as `with_finite_mask` gives them when any value is
+/// non-finite or beyond `max_summed_magnitude`.
 struct SeparableSource {
     Kernel1D kernel;
     std::shared_ptr<const PixelBlock> pixels;  ///< may be shared by several kernels

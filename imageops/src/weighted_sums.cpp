@@ -26,7 +26,7 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
             for (int c = 0; c < nc; ++c) {
                 const float v = in[chbegin + c];
                 const bool ok = std::isfinite(v);
-                src.value[size_t(c)][at + i] = ok ? v : 0.0f;
+                src.value[size_t(c)][at + i] = summable(v);
                 finite[size_t(c)][at + i]    = ok ? 1.0f : 0.0f;
                 any |= !ok;
             }

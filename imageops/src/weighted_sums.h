@@ -22,8 +22,9 @@
 namespace mcdenoise {
 
 /// The values the sums read, as channel planes of width `region.width()`:
-/// non-finite values as 0 and, when there are any, a plane per channel of
-/// 1 where finite and 0 where not.
+/// each value as a sum takes it (`summable`: non-finite ones as 0, huge
+/// ones clamped) and, when any is non-finite, a plane per channel of 1
+/// where finite and 0 where not.
 struct SumSource {
     OIIO::ROI region;
     std::vector<std::vector<float>> value;
