@@ -203,6 +203,27 @@ TEST_P(GuidedFilters, MatchSpecForWideWindows)
         expect_matches_spec(GetParam(), beauty, g, size);
 }
 
+TEST_P(GuidedFilters, EachPixelAloneGivesItsBitsInTheWholeImage)
+{
+    // A one-pixel ROI sums its window apart (pixel by pixel for each
+    // offset); in the whole image the same pixel may share window columns
+    // with a run of its key. Both must give the same bits.
+    const ImageBuf beauty = testimg::random_image(61, 47, 3, 42, 0.0f, 5.0f);
+    const Guides g        = make_guides(61, 47, 43);
+    for (int size : { 3, 7 }) {
+        ImageBuf whole;
+        ASSERT_TRUE(GetParam().run(whole, beauty, g, size, {}, 1)) << whole.geterror();
+        for (int y = 0; y < 47; y += 2)
+            for (int x = y % 3; x < 61; x += 3) {
+                const ROI pixel(x, x + 1, y, y + 1, 0, 1, 0, 3);
+                ImageBuf alone;
+                ASSERT_TRUE(GetParam().run(alone, beauty, g, size, pixel, 1)) << alone.geterror();
+                ASSERT_EQ(testimg::pixels(alone, pixel), testimg::pixels(whole, pixel))
+                    << "pixel (" << x << ", " << y << ") size " << size;
+            }
+    }
+}
+
 TEST_P(GuidedFilters, IdsStoredAsFloatHalfAndUint32)
 {
     const ImageBuf beauty = testimg::random_image(40, 33, 3, 3);

@@ -45,6 +45,16 @@ struct SameObjectAndReflection {
         for (int i = 0; i < xs.size(); ++i)
             w[i] = id[i] == center && rid[i] == center_rid ? 1.0f : 0.0f;
     }
+    void offset_weights(int y, Span xs, int dx, int qy, float* w) const
+    {
+        const Id* center     = ids.from(xs.begin, y);
+        const Id* center_rid = reflect.from(xs.begin, y);
+        const Id* id         = ids.from(xs.begin + dx, qy);
+        const Id* rid        = reflect.from(xs.begin + dx, qy);
+        for (int i = 0; i < xs.size(); ++i)
+            w[i] = id[i] == center[i] && (center_rid[i] < 0 || rid[i] == center_rid[i]) ? 1.0f
+                                                                                          : 0.0f;
+    }
 };
 
 bool brdf_filter(const char* op, Reduction reduction, ImageBuf& dst, const ImageBuf& beauty,

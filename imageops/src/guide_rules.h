@@ -84,6 +84,13 @@ struct SameObject {
     {
         matching_keys(ids.from(xs.begin, qy), ids.at(px, py), xs, w);
     }
+    void offset_weights(int y, Span xs, int dx, int qy, float* w) const
+    {
+        const Id* center = ids.from(xs.begin, y);
+        const Id* id     = ids.from(xs.begin + dx, qy);
+        for (int i = 0; i < xs.size(); ++i)
+            w[i] = id[i] == center[i] ? 1.0f : 0.0f;
+    }
 };
 
 /// Where object ids change, over the ids' region (key 0).

@@ -2,7 +2,8 @@
 // is a rule: which neighbours are viable and with what guide weight. Pixels
 // whose whole window is viable with weight 1 take the separable fast path;
 // the others are summed window column by window column, each column once
-// for a run of pixels whose weights depend on one center key (object id).
+// for a run of pixels whose weights depend on one center key (object id),
+// or, where every pixel has its own key, for all of a run's pixels at once.
 #pragma once
 
 #include "separable_mean.h"
@@ -121,12 +122,88 @@ int guided_mean_run(const SeparableSource& src, const Rule& rule, int xb, int xe
     return empty;
 }
 
+/// Working memory of `guided_mean_lanes` for runs of up to `span` pixels of
+/// `block_channels` values each; value arrays are value-major (`span` per
+/// value).
+struct LaneScratch {
+    LaneScratch(int span, int block_channels)
+        : guide(size_t(span)), weight(size_t(span)), column_weight(size_t(span)),
+          column(size_t(span) * block_channels), total(size_t(span)),
+          window(size_t(span) * block_channels)
+    {
+    }
+    std::vector<float> guide;            ///< each pixel's guide weight at one offset
+    std::vector<double> weight;          ///< the same times the row's spatial weight
+    std::vector<double> column_weight;   ///< each pixel's current window column
+    std::vector<double> column;          ///< its weighted values
+    std::vector<double> total;           ///< each pixel's window weight
+    std::vector<double> window;          ///< its weighted values
+};
+
+/// `guided_mean_run`'s means for the pixels [xb, xe) of row y when each may
+/// have its own center key (curved surfaces under the normal rule): every
+/// pixel's window summed at once, window column by window column, from the
+/// guide weights `rule.offset_weights(y, xs, dx, qy, w)` gives for all of
+/// them (w[x - xs.begin]: the weight of neighbour (x + dx, qy) of center
+/// (x, y)). Each pixel's arithmetic is guided_mean_run's term for term,
+/// so its result is bit-identical. Every window must lie inside the block's
+/// columns. Returns the count of channels with no contribution.
+template<class Rule>
+int guided_mean_lanes(const SeparableSource& src, const Rule& rule, int xb, int xe, int y,
+                      LaneScratch& s, float* out, std::ptrdiff_t stride)
+{
+    const Kernel1D& k = src.kernel;
+    const int r = k.radius, n = xe - xb, nc = src.nchannels, per = src.block().nchannels;
+    const OIIO::ROI& reg = src.block().region;
+    const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
+    float* guide = s.guide.data();
+    double *weight = s.weight.data(), *column_weight = s.column_weight.data();
+    double *column = s.column.data(), *total = s.total.data(), *window = s.window.data();
+    std::fill_n(total, n, 0.0);
+    std::fill_n(window, size_t(n) * per, 0.0);
+    for (int dx = -r; dx <= r; ++dx) {
+        std::fill_n(column_weight, n, 0.0);
+        std::fill_n(column, size_t(n) * per, 0.0);
+        for (int qy = ys.begin; qy < ys.end; ++qy) {
+            rule.offset_weights(y, Span { xb, xe }, dx, qy, guide);
+            if (qy == y && dx == 0)
+                std::fill_n(guide, n, 1.0f);
+            const double wy = k.weights[size_t(qy - y + r)];
+            for (int i = 0; i < n; ++i) {
+                weight[i] = wy * guide[i];
+                column_weight[i] += weight[i];
+            }
+            const float* v = src.block().pixel(xb + dx, qy);
+            for (int j = 0; j < per; ++j)
+                for (int i = 0; i < n; ++i)
+                    column[j * n + i] += weight[i] * v[i * per + j];
+        }
+        const float kx = k.weights[size_t(dx + r)];
+        for (int i = 0; i < n; ++i)
+            total[i] += kx * column_weight[i];
+        for (int j = 0; j < n * per; ++j)
+            window[j] += kx * column[j];
+    }
+    int empty = 0;
+    for (int i = 0; i < n; ++i, out += stride)
+        for (int c = 0; c < nc; ++c) {
+            const double num = window[c * n + i];
+            const double den = src.masked ? window[(nc + c) * n + i] : total[i];
+            const bool any   = den > 0.0;
+            out[c]           = any ? float(num / den) : 0.0f;
+            empty += !any;
+        }
+    return empty;
+}
+
 /// The guided weighted mean over the pixels of `strip` that `select` picks
 /// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
 /// to filter, 0 for the others). Pixels whose windows `rule.uniform_row`
 /// marks wholly viable with weight 1 come from the separable fast path; the
 /// others from `guided_mean_run`, in runs of equal `rule.key(x, y)` (a
-/// value whose equality implies equal guide weights). Rows with no selected
+/// value whose equality implies equal guide weights), or from
+/// `guided_mean_lanes` where consecutive pixels each have their own key
+/// (the results are the same either way). Rows with no selected
 /// pixel are skipped. With `AllSelected`, fast rows are written straight
 /// into `result` and only the other pixels are overwritten.
 template<bool AllSelected = false, class Rule, class Select>
@@ -141,6 +218,8 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
     std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
     std::vector<uint8_t> done(static_cast<size_t>(w));  // fast, or not chosen
     GuidedScratch scratch(w + 2 * src.kernel.radius, src.block().nchannels);
+    LaneScratch lanes(w, src.block().nchannels);
+    const OIIO::ROI& reg = src.block().region;
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
     for (int y = strip.ybegin; y < strip.yend; ++y) {
@@ -182,17 +261,34 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
             first = last;
         }
         // The other chosen pixels, found by memchr (few away from guide
-        // edges), in runs of one center key where the rule has keys.
+        // edges), in runs of one center key; consecutive runs of one pixel
+        // whose windows lie inside the block are summed together.
         const uint8_t* d = done.data();
-        int i = 0;
-        while (const void* p = std::memchr(d + i, 0, size_t(w - i))) {
-            i = int(static_cast<const uint8_t*>(p) - d);
+        const auto run_end = [&](int i) {
             int end = i + 1;
             while (end < w && !d[end]
                    && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
                 ++end;
-            empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
-                                     scratch, out_row + std::ptrdiff_t(i) * stride, stride);
+            return end;
+        };
+        const auto lone = [&](int i, int end) {
+            const int x = strip.xbegin + i, r = src.kernel.radius;
+            return end == i + 1 && x - r >= reg.xbegin && x + r < reg.xend;
+        };
+        int i = 0;
+        while (const void* p = std::memchr(d + i, 0, size_t(w - i))) {
+            i = int(static_cast<const uint8_t*>(p) - d);
+            int end = run_end(i);
+            float* out = out_row + std::ptrdiff_t(i) * stride;
+            if (lone(i, end)) {
+                while (end < w && !d[end] && lone(end, run_end(end)))
+                    ++end;
+                empty += guided_mean_lanes(src, rule, strip.xbegin + i, strip.xbegin + end, y,
+                                           lanes, out, stride);
+            } else {
+                empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
+                                         scratch, out, stride);
+            }
             i = end;
             if (i >= w)
                 break;

@@ -20,7 +20,9 @@ namespace {
 float normal_weight(const UnitNormal& a, const UnitNormal& b)
 {
     const bool same = (a.x == b.x) & (a.y == b.y) & (a.z == b.z);
-    return same ? 1.0f : std::max(0.0f, a.x * b.x + a.y * b.y + a.z * b.z);
+    const float dot = a.x * b.x + a.y * b.y + a.z * b.z;
+    const float positive = dot > 0.0f ? dot : 0.0f;
+    return same ? 1.0f : positive;
 }
 
 // Normal rule: q viable iff it shares the object id; weight by normals. A
@@ -48,8 +50,21 @@ struct SameObjectWeightedByNormal {
         const UnitNormal* n = normals.from(xs.begin, qy);
         const Id center = ids.at(px, py);
         const UnitNormal& center_normal = normals.at(px, py);
-        for (int i = 0; i < xs.size(); ++i)
-            w[i] = id[i] == center ? normal_weight(center_normal, n[i]) : 0.0f;
+        for (int i = 0; i < xs.size(); ++i) {  // branch-free: the compiler vectorises it
+            const float weight = normal_weight(center_normal, n[i]);
+            w[i]               = id[i] == center ? weight : 0.0f;
+        }
+    }
+    void offset_weights(int y, Span xs, int dx, int qy, float* w) const
+    {
+        const Id* center              = ids.from(xs.begin, y);
+        const UnitNormal* center_normal = normals.from(xs.begin, y);
+        const Id* id                  = ids.from(xs.begin + dx, qy);
+        const UnitNormal* n           = normals.from(xs.begin + dx, qy);
+        for (int i = 0; i < xs.size(); ++i) {
+            const float weight = normal_weight(center_normal[i], n[i]);
+            w[i]               = id[i] == center[i] ? weight : 0.0f;
+        }
     }
 };
 
