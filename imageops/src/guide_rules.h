@@ -109,17 +109,18 @@ KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ)
     parallel_rows(region, nthreads, [&region, flags, differ](int ay) {
         // Local copies (of `differ` too): byte stores could otherwise alias
         // the bounds and the planes `differ` reads.
+        const auto local_differ = differ;
         const int w = region.width(), h = region.height(), y = ay - region.ybegin;
         uint8_t* out    = flags + size_t(y) * w;
         const size_t row = size_t(y) * w;
         // Branch-free loops the compiler vectorises; the last column has
         // no right neighbour, the last row none below.
         for (int x = 0; x < w - 1; ++x)
-            out[x] = differ(row + x, row + x + 1);
+            out[x] = local_differ(row + x, row + x + 1);
         out[w - 1] = 0;
         if (y < h - 1)
             for (int x = 0; x < w; ++x)
-                out[x] = uint8_t(out[x] | (differ(row + x, row + x + w) << 4));
+                out[x] = uint8_t(out[x] | (local_differ(row + x, row + x + w) << 4));
     });
     return changes;
 }

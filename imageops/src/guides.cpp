@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 namespace mcdenoise {
 
@@ -202,12 +203,14 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
 {
     return load_plane<UnitNormal, float>(
         op, dst, normals, region, nthreads, plane,
-        [](const float* n, bool inside) {
+        [](const float* n, bool inside) {  // branch-free: the compiler vectorises it
             const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1]
                                          + double(n[2]) * n[2]);
-            if (!inside || !(len > 0.0) || !std::isfinite(len))
-                return UnitNormal {};
-            return UnitNormal { float(n[0] / len), float(n[1] / len), float(n[2] / len) };
+            const bool usable = inside & (len > 0.0) & (len <= std::numeric_limits<double>::max());
+            const double divisor = usable ? len : 1.0;
+            const UnitNormal unit { float(n[0] / divisor), float(n[1] / divisor),
+                                    float(n[2] / divisor) };
+            return usable ? unit : UnitNormal {};
         });
 }
 

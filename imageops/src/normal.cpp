@@ -85,8 +85,8 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         ids, normals,
         uniform_map(key_changes(ids.region, nthreads,
                                 [id, n](size_t i, size_t j) {
-                                    return uint8_t(id[i] != id[j] || n[i].x != n[j].x
-                                                   || n[i].y != n[j].y || n[i].z != n[j].z);
+                                    return uint8_t((id[i] != id[j]) | (n[i].x != n[j].x)
+                                                   | (n[i].y != n[j].y) | (n[i].z != n[j].z));
                                 }),
                     roi, size / 2, nthreads)
     };
