@@ -16,7 +16,9 @@
 
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -229,6 +231,30 @@ TEST_P(GuidedFilters, IdsStoredAsFloatHalfAndUint32)
     const ImageBuf beauty = testimg::random_image(40, 33, 3, 3);
     for (TypeDesc format : { TypeDesc::FLOAT, TypeDesc::HALF, TypeDesc::UINT32 })
         expect_matches_spec(GetParam(), beauty, make_guides(40, 33, 4, format), 5);
+}
+
+TEST_P(GuidedFilters, IdsRoundAsSpecSaysAcrossTheirRange)
+{
+    // Blocks of ids that round half to even, NaN, the ends of 32 bits and
+    // beyond (which take the renumbering path), stored as float and double.
+    const double choices[] = { 2.4, 2.5, 3.5, -0.5, -2.5, 7.49, std::nan(""), 2147483520.0,
+                               -2147483648.0, 3e9, -3e9, 1e15, -1e15 };
+    const int w = 53, h = 41;
+    std::vector<float> ids(size_t(w) * h), reflect(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t block = size_t((x / 6) * 5 + (y / 5) * 3);  // reflect: finer
+            const size_t facet = size_t(((x + 1) / 3) * 7 + ((y + 2) / 2) * 2);
+            ids[size_t(y) * w + x]     = float(choices[block % std::size(choices)]);
+            reflect[size_t(y) * w + x] = float(choices[facet % std::size(choices)]);
+        }
+    const ImageBuf beauty = testimg::random_image(w, h, 3, 44, 0.0f, 5.0f);
+    for (TypeDesc format : { TypeDesc::FLOAT, TypeDesc::DOUBLE }) {
+        Guides g  = make_guides(w, h, 45);
+        g.ids     = testimg::from_values(w, h, 1, format, 0, 0, ids);
+        g.reflect = testimg::from_values(w, h, 1, format, 0, 0, reflect);
+        expect_matches_spec(GetParam(), beauty, g, 5);
+    }
 }
 
 TEST_P(GuidedFilters, NonFiniteBeautyNeverPropagates)

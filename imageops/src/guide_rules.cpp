@@ -18,7 +18,7 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
     const int w = reg.width();
     const int x0 = std::max(reg.xbegin, roi.xbegin - r), x1 = std::min(reg.xend, roi.xend + r);
     UniformMap map { roi, LargeVector<KeyBits>(size_t(roi.width()) * roi.height()) };
-    parallel_rows(roi, nthreads, [&](int y) {
+    parallel_rows(roi, nthreads, [&, r](int y) {
         // Columns x0 .. x1 at offset r, zero padding r wide on both sides;
         // bounds copied locally so the byte stores cannot alias them.
         const int nx = x1 - x0, n = roi.width();
@@ -38,9 +38,9 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
         for (int d = 0; d < 2 * r; ++d)
             for (int i = 0; i < n; ++i)
                 out[i] |= from[i + d];
+        const uint8_t* last = from + 2 * r;  // the window's last column
         for (int i = 0; i < n; ++i)
-            out[i] = KeyBits(((out[i] | (from[i + 2 * r] & lower_pairs)) >> 4)
-                             | (out[i] & right_pairs));
+            out[i] = KeyBits(((out[i] | (last[i] & lower_pairs)) >> 4) | (out[i] & right_pairs));
     });
     return map;
 }

@@ -196,6 +196,30 @@ int guided_mean_lanes(const SeparableSource& src, const Rule& rule, int xb, int 
     return empty;
 }
 
+/// The index of the first byte equal to `value` in [from, n) of `bytes`,
+/// or n (a SIMD scan: memchr).
+inline int next_byte(const uint8_t* bytes, int from, int n, uint8_t value)
+{
+    const void* p = from < n ? std::memchr(bytes + from, value, size_t(n - from)) : nullptr;
+    return p ? int(static_cast<const uint8_t*>(p) - bytes) : n;
+}
+
+/// The end of the fast segment that starts at the uniform pixel `first` of
+/// a row's `uniform` flags (n of them): one past its last uniform pixel,
+/// where the next uniform pixel lies more than `gap` pixels beyond it.
+inline int fast_segment_end(const uint8_t* uniform, int first, int n, int gap)
+{
+    int end = first + 1;
+    while (end < n) {
+        const int hole = next_byte(uniform, end, n, 0);
+        const int next = next_byte(uniform, hole, n, 1);
+        if (next == n || next - (hole - 1) > gap)
+            return hole;
+        end = next + 1;
+    }
+    return end;
+}
+
 /// The guided weighted mean over the pixels of `strip` that `select` picks
 /// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
 /// to filter, 0 for the others). Pixels whose windows `rule.uniform_row`
@@ -237,32 +261,28 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
             done[size_t(i)] = uniform[size_t(i)] | !chosen[size_t(i)];
         }
         float* out_row = result.pixel(strip.xbegin, y);
-        // The fast pixels in segments [first, last]: a gap wider than a
-        // window's reach (which every segment sums again) starts a new one.
+        // The fast pixels in segments: a gap wider than a window's reach
+        // (which every segment sums again) starts a new one.
         const int gap = 2 * src.kernel.radius + 16;
-        for (int first = 0; first < w; ++first) {
-            if (!uniform[size_t(first)])
-                continue;
-            int last = first;
-            for (int i = first + 1; i < w && i - last <= gap; ++i)
-                last = uniform[size_t(i)] ? i : last;
-            const Span segment { strip.xbegin + first, strip.xbegin + last + 1 };
-            if (AllSelected)
-                fast.row(y, segment, out_row, stride, fast_empty.data());
-            else
-                fast.row(y, segment, fast_row.data(), nc, fast_empty.data());
-            for (int i = first; i <= last; ++i)
-                empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
+        for (int first = next_byte(uniform.data(), 0, w, 1); first < w;) {
+            const int end   = fast_segment_end(uniform.data(), first, w, gap);
+            const Span segment { strip.xbegin + first, strip.xbegin + end };
+            const int64_t segment_empty
+                = AllSelected ? fast.row(y, segment, out_row, stride, fast_empty.data())
+                              : fast.row(y, segment, fast_row.data(), nc, fast_empty.data());
+            if (segment_empty)
+                for (int i = first; i < end; ++i)
+                    empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
             if (!AllSelected)
-                for (int i = first; i <= last; ++i)
+                for (int i = first; i < end; ++i)
                     if (uniform[size_t(i)])
                         std::copy_n(fast_row.data() + size_t(i) * nc, nc,
                                     out_row + std::ptrdiff_t(i) * stride);
-            first = last;
+            first = next_byte(uniform.data(), end, w, 1);
         }
-        // The other chosen pixels, found by memchr (few away from guide
-        // edges), in runs of one center key; consecutive runs of one pixel
-        // whose windows lie inside the block are summed together.
+        // The other chosen pixels (few away from guide edges), in runs of
+        // one center key; consecutive runs of one pixel whose windows lie
+        // inside the block are summed together.
         const uint8_t* d = done.data();
         const auto run_end = [&](int i) {
             int end = i + 1;
@@ -275,9 +295,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
             const int x = strip.xbegin + i, r = src.kernel.radius;
             return end == i + 1 && x - r >= reg.xbegin && x + r < reg.xend;
         };
-        int i = 0;
-        while (const void* p = std::memchr(d + i, 0, size_t(w - i))) {
-            i = int(static_cast<const uint8_t*>(p) - d);
+        for (int i = next_byte(d, 0, w, 0); i < w;) {
             int end = run_end(i);
             float* out = out_row + std::ptrdiff_t(i) * stride;
             if (lone(i, end)) {
@@ -289,9 +307,7 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
                 empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
                                          scratch, out, stride);
             }
-            i = end;
-            if (i >= w)
-                break;
+            i = next_byte(d, end, w, 0);
         }
     }
     result.empty_windows += empty;

@@ -42,10 +42,11 @@ bool check_guide(const char* op, const char* name, ImageBuf& dst, const ImageBuf
 
 namespace {
 
-// Reads `guide` over `region` as `Raw` values and maps each pixel through
-// `convert(raw, inside)` (`inside`: within the guide's data window), strip
-// by strip on `nthreads` threads, a few rows at a time so the raw values
-// stay in cache. Float values are read in place where the guide holds them.
+// Reads `guide` over `region` as `Raw` values and maps them row piece by row
+// piece through `convert(raw, nc, n, inside, out)` (n pixels of nc values
+// into `out`; `inside`: within the guide's data window), strip by strip on
+// `nthreads` threads, a few rows at a time so the raw values stay in cache.
+// Float values are read in place where the guide holds them.
 template<class T, class Raw, class Convert>
 bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
                 int nthreads, GuidePlane<T>& plane, Convert&& convert)
@@ -86,14 +87,11 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
                 const int x0
                     = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
                 const int x1 = row_inside ? std::clamp(dw.xend, x0, part.xend) : part.xend;
-                const Raw* v = in;
-                int x = part.xbegin;
-                for (; x < x0; ++x, v += nc)
-                    *out++ = convert(v, false);
-                for (; x < x1; ++x, v += nc)
-                    *out++ = convert(v, true);
-                for (; x < part.xend; ++x, v += nc)
-                    *out++ = convert(v, false);
+                const int before = x0 - part.xbegin, within = x1 - x0;
+                convert(in, nc, before, false, out);
+                convert(in + std::ptrdiff_t(before) * nc, nc, within, true, out + before);
+                convert(in + std::ptrdiff_t(before + within) * nc, nc,
+                        part.xend - x1, false, out + before + within);
             }
         }
     });
@@ -104,8 +102,8 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
     return true;
 }
 
-// Reads `ids` over `region` through `convert(raw, inside)` into `plane`,
-// as float where the guide's pixel type holds only values a float
+// Reads `ids` over `region` through `convert` (load_plane's row form) into
+// `plane`, as float where the guide's pixel type holds only values a float
 // represents exactly (half, float, 8 and 16 bit integers), else as double.
 template<class T, class Convert>
 bool load_raw_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
@@ -119,6 +117,16 @@ bool load_raw_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI&
     if (exact_in_float)
         return load_plane<T, float>(op, dst, ids, region, nthreads, plane, convert);
     return load_plane<T, double>(op, dst, ids, region, nthreads, plane, convert);
+}
+
+// load_plane's row form of a per-pixel `convert(raw, inside)`.
+template<class Convert>
+auto each_pixel(Convert convert)
+{
+    return [convert](const auto* in, int nc, int n, bool inside, auto* out) {
+        for (int i = 0; i < n; ++i)
+            out[i] = convert(in + std::ptrdiff_t(i) * nc, inside);
+    };
 }
 
 // The whole-number ids of `wide` (outside pixels as INT64_MIN) numbered
@@ -142,41 +150,78 @@ void renumber(const GuidePlane<int64_t>& wide, IdPlane& plane)
     }
 }
 
-// Ids through `convert(raw, inside)` (whole numbers, INT64_MIN outside the
-// data window): stored as they are when every one fits in 32 bits, else
-// renumbered from a 64-bit plane.
-template<class Convert>
-bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
-                   int nthreads, IdPlane& plane, Convert&& convert)
+// The two kinds of id: object ids keep their sign, reflect ids take every
+// negative value as -1 ("not specular"), before rounding.
+enum class IdKind { object, reflect };
+
+// An id rounded to the nearest whole number, clamped inside int64's range;
+// NaN (and for reflect ids, any negative value) as -1.
+template<IdKind kind, class Raw>
+int64_t exact_id(Raw v)
 {
-    constexpr int64_t outside = std::numeric_limits<int64_t>::min();
+    constexpr Raw limit = Raw(9.0e18);
+    const bool none = std::isnan(v) || (kind == IdKind::reflect && v < Raw(0));
+    return none ? int64_t(-1) : int64_t(std::nearbyint(std::clamp(v, -limit, limit)));
+}
+
+// The `n` ids of `in` (`nc` values apart) in 32 bits, into `out`: a loop the
+// compiler vectorises, redone id by id when a NaN or an id beyond 32 bits
+// shows. Returns true when some id does not fit (it is stored as 0).
+template<IdKind kind, class Raw>
+bool ids_in_32_bits(const Raw* in, int nc, int n, Id* out)
+{
+    constexpr Raw low = Raw(-2147483648.0), high = Raw(2147483648.0);
+    int rare = 0;
+    for (int i = 0; i < n; ++i) {
+        const Raw v     = in[std::ptrdiff_t(i) * nc];
+        const Raw id    = std::nearbyint(v);
+        const bool fits = (id > low) & (id < high);  // false for NaN
+        if constexpr (kind == IdKind::reflect) {
+            const bool negative = v < Raw(0);
+            rare |= !fits & !negative;
+            out[i] = negative ? Id(-1) : Id(fits ? id : Raw(0));
+        } else {
+            rare |= !fits;
+            out[i] = Id(fits ? id : Raw(0));
+        }
+    }
+    if (!rare)
+        return false;
+    bool wide = false;
+    for (int i = 0; i < n; ++i) {
+        const int64_t id = exact_id<kind>(in[std::ptrdiff_t(i) * nc]);
+        const bool fits  = id > no_guide_id && id <= std::numeric_limits<Id>::max();
+        wide |= !fits;
+        out[i] = Id(fits ? id : 0);
+    }
+    return wide;
+}
+
+// Ids of `kind`, no_guide_id outside the data window: stored as they are
+// when every one fits in 32 bits, else renumbered from a 64-bit plane.
+template<IdKind kind>
+bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
+                   int nthreads, IdPlane& plane)
+{
     std::atomic<bool> wide_ids { false };
-    const bool ok = load_raw_ids(op, dst, ids, region, nthreads, plane,
-                                 [&](const auto* v, bool inside) {
-                                     const int64_t id = convert(v, inside);
-                                     if (id == outside)
-                                         return no_guide_id;
-                                     const bool fits = id > no_guide_id
-                                                       && id <= std::numeric_limits<Id>::max();
-                                     if (!fits)
-                                         wide_ids.store(true, std::memory_order_relaxed);
-                                     return Id(fits ? id : 0);
-                                 });
+    const bool ok = load_raw_ids(
+        op, dst, ids, region, nthreads, plane,
+        [&](const auto* in, int nc, int n, bool inside, Id* out) {
+            if (!inside)
+                std::fill_n(out, n, no_guide_id);
+            else if (ids_in_32_bits<kind>(in, nc, n, out))
+                wide_ids.store(true, std::memory_order_relaxed);
+        });
     if (!ok || !wide_ids)
         return ok;
     GuidePlane<int64_t> wide;
-    if (!load_raw_ids(op, dst, ids, region, nthreads, wide, convert))
+    const auto wide_id = [](const auto* v, bool inside) {
+        return inside ? exact_id<kind>(*v) : std::numeric_limits<int64_t>::min();
+    };
+    if (!load_raw_ids(op, dst, ids, region, nthreads, wide, each_pixel(wide_id)))
         return false;
     renumber(wide, plane);
     return true;
-}
-
-// An id rounded to the nearest whole number; NaN as -1.
-template<class Raw>
-int64_t rounded_id(Raw v)
-{
-    constexpr Raw limit = Raw(9.0e18);  // inside int64's range
-    return std::isnan(v) ? int64_t(-1) : int64_t(std::nearbyint(std::clamp(v, -limit, limit)));
 }
 
 }  // namespace
@@ -184,18 +229,13 @@ int64_t rounded_id(Raw v)
 bool load_object_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
                      int nthreads, IdPlane& plane)
 {
-    return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
-        return inside ? rounded_id(*v) : std::numeric_limits<int64_t>::min();
-    });
+    return load_id_plane<IdKind::object>(op, dst, ids, region, nthreads, plane);
 }
 
 bool load_reflect_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
                       int nthreads, IdPlane& plane)
 {
-    return load_id_plane(op, dst, ids, region, nthreads, plane, [](const auto* v, bool inside) {
-        return inside ? std::max(rounded_id(*v), int64_t(-1))
-                      : std::numeric_limits<int64_t>::min();
-    });
+    return load_id_plane<IdKind::reflect>(op, dst, ids, region, nthreads, plane);
 }
 
 bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const ROI& region,
@@ -203,7 +243,7 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
 {
     return load_plane<UnitNormal, float>(
         op, dst, normals, region, nthreads, plane,
-        [](const float* n, bool inside) {  // branch-free: the compiler vectorises it
+        each_pixel([](const float* n, bool inside) {  // branch-free: the compiler vectorises it
             const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1]
                                          + double(n[2]) * n[2]);
             const bool usable = inside & (len > 0.0) & (len <= std::numeric_limits<double>::max());
@@ -211,19 +251,19 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
             const UnitNormal unit { float(n[0] / divisor), float(n[1] / divisor),
                                     float(n[2] / divisor) };
             return usable ? unit : UnitNormal {};
-        });
+        }));
 }
 
 bool load_depths(const char* op, ImageBuf& dst, const ImageBuf& depth, const ROI& region,
                  int nthreads, GuidePlane<float>& plane)
 {
     return load_plane<float, float>(op, dst, depth, region, nthreads, plane,
-                                    [](const float* d, bool inside) {
+                                    each_pixel([](const float* d, bool inside) {
                                         const bool far = !inside || !std::isfinite(*d)
                                                          || *d >= infinitely_far;
                                         return far ? std::numeric_limits<float>::infinity()
                                                    : *d;
-                                    });
+                                    }));
 }
 
 }  // namespace mcdenoise

@@ -50,8 +50,8 @@ constexpr Id no_guide_id = std::numeric_limits<Id>::min();
 bool load_object_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& ids,
                      const OIIO::ROI& region, int nthreads, IdPlane& plane);
 
-/// Reflect ids over `region`: rounded to nearest; any negative value or NaN
-/// as -1 ("not specular").
+/// Reflect ids over `region`: any negative value (before rounding: -0.4 too)
+/// or NaN as -1 ("not specular"), the others rounded to nearest.
 bool load_reflect_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& ids,
                       const OIIO::ROI& region, int nthreads, IdPlane& plane);
 
