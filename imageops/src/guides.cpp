@@ -247,9 +247,9 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
             const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1]
                                          + double(n[2]) * n[2]);
             const bool usable = inside & (len > 0.0) & (len <= std::numeric_limits<double>::max());
-            const double divisor = usable ? len : 1.0;
-            const UnitNormal unit { float(n[0] / divisor), float(n[1] / divisor),
-                                    float(n[2] / divisor) };
+            const double scale = 1.0 / (usable ? len : 1.0);  // one division, not three
+            const UnitNormal unit { float(n[0] * scale), float(n[1] * scale),
+                                    float(n[2] * scale) };
             return usable ? unit : UnitNormal {};
         }));
 }

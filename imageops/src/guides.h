@@ -57,7 +57,7 @@ bool load_reflect_ids(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf&
 
 /// A normal, unit length, or all zero for "no normal".
 struct UnitNormal {
-    float x = 0.0f, y = 0.0f, z = 0.0f;
+    float x, y, z;  ///< `UnitNormal {}` is all zero
 };
 
 /// Normals over `region`, normalised; zero-length or non-finite ones (and

@@ -2,12 +2,15 @@
 // flags, uniform-window maps). Blocks of 4 MiB and more are aligned to
 // 2 MiB and advised as transparent huge pages, so touching a fresh plane
 // costs a few page faults instead of one per 4 KiB page (at 1080p the page
-// faults of the guides' planes cost as much as the filtering itself).
+// faults of the guides' planes cost as much as the filtering itself); new
+// elements are left uninitialised, as every plane is written in full.
 #pragma once
 
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <sys/mman.h>
@@ -39,6 +42,19 @@ struct LargeBufferAllocator {
             throw std::bad_alloc();
         madvise(p, rounded, MADV_HUGEPAGE);  // advice only: failure is harmless
         return static_cast<T*>(p);
+    }
+
+    /// Elements are default-initialised: a plane's values are all written
+    /// once they are read, so zeroing them first would be wasted.
+    template<class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
+    {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template<class U, class... Args>
+    void construct(U* p, Args&&... args)
+    {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
     void deallocate(T* p, size_t n) noexcept
