@@ -140,6 +140,39 @@ struct LaneScratch {
     std::vector<double> window;          ///< its weighted values
 };
 
+/// column[j * n + i] += weight[i] * v[i * Per + j] for the `n` pixels of `v`
+/// (Per values each; 0: `per`), read in order: with Per known, the compiler
+/// vectorises it as interleaved loads.
+template<int Per>
+void add_weighted_pixels_of(const double* weight, const float* v, int n, int per,
+                            double* column)
+{
+    if constexpr (Per == 0) {
+        for (int j = 0; j < per; ++j)
+            for (int i = 0; i < n; ++i)
+                column[j * n + i] += weight[i] * v[i * per + j];
+    } else {
+        double* values[Per];
+        for (int j = 0; j < Per; ++j)
+            values[j] = column + j * n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < Per; ++j)
+                values[j][i] += weight[i] * v[i * Per + j];
+    }
+}
+
+/// `add_weighted_pixels_of` for the usual value counts.
+inline void add_weighted_pixels(const double* weight, const float* v, int n, int per,
+                                double* column)
+{
+    switch (per) {
+    case 3: return add_weighted_pixels_of<3>(weight, v, n, per, column);
+    case 4: return add_weighted_pixels_of<4>(weight, v, n, per, column);
+    case 6: return add_weighted_pixels_of<6>(weight, v, n, per, column);
+    default: return add_weighted_pixels_of<0>(weight, v, n, per, column);
+    }
+}
+
 /// `guided_mean_run`'s means for the pixels [xb, xe) of row y when each may
 /// have its own center key (curved surfaces under the normal rule): every
 /// pixel's window summed at once, window column by window column, from the
@@ -173,10 +206,7 @@ int guided_mean_lanes(const SeparableSource& src, const Rule& rule, int xb, int 
                 weight[i] = wy * guide[i];
                 column_weight[i] += weight[i];
             }
-            const float* v = src.block().pixel(xb + dx, qy);
-            for (int j = 0; j < per; ++j)
-                for (int i = 0; i < n; ++i)
-                    column[j * n + i] += weight[i] * v[i * per + j];
+            add_weighted_pixels(weight, src.block().pixel(xb + dx, qy), n, per, column);
         }
         const float kx = k.weights[size_t(dx + r)];
         for (int i = 0; i < n; ++i)
