@@ -11,7 +11,9 @@ namespace mcdenoise {
 /// object its mirror-reflection ray hit), a neighbour is viable when it has
 /// the center's object id and the same reflect id; otherwise when it has the
 /// center's object id. Mixing only pixels that reflect the same object keeps
-/// the detail of reflections, which the object filters blur.
+/// the detail of reflections, which the object filters blur. Ids compare
+/// rounded to nearest; any negative reflect id (-0.4 too) or NaN means "not
+/// specular".
 ImageBuf brdf_mean(const ImageBuf& beauty, const ImageBuf& object_id,
                    const ImageBuf& reflect_id, int size = 3, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
