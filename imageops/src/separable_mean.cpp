@@ -6,6 +6,7 @@
 #include "window.h"
 
 #include <algorithm>
+#include <cstring>
 #include <memory>
 
 namespace mcdenoise {
@@ -142,8 +143,9 @@ private:
     // change (they are the same for every row whose window is not clipped).
     void expand(const Sum* geometric, int width)
     {
+        // Weights are positive: equal values have equal bits (memcmp is SIMD).
         if (m_weights.size() == size_t(width)
-            && std::equal(m_weights.begin(), m_weights.end(), geometric))
+            && std::memcmp(m_weights.data(), geometric, sizeof(Sum) * size_t(width)) == 0)
             return;
         m_weights.assign(geometric, geometric + width);
         m_reciprocals.resize(size_t(width) * m_nc);
@@ -340,16 +342,20 @@ private:
         float interior = 0.0f;
         for (int i = 0; i <= 2 * m_r; ++i)
             interior += w[i] * column_weight;
-        for (int x = xs.begin; x < xs.end; ++x) {
+        const int in_begin = std::clamp(reg.xbegin + m_r, xs.begin, xs.end);
+        const int in_end   = std::clamp(reg.xend - m_r, in_begin, xs.end);
+        const auto clipped = [&](int x) {  // windows cut by the region's edge
             const Span window = clip_window(x, m_r, reg.xbegin, reg.xend);
             float weight      = 0.0f;
-            if (window.size() == 2 * m_r + 1)
-                weight = interior;
-            else
-                for (int i = window.begin; i < window.end; ++i)
-                    weight += w[i - x + m_r] * column_weight;
+            for (int i = window.begin; i < window.end; ++i)
+                weight += w[i - x + m_r] * column_weight;
             m_weights[size_t(x - xs.begin)] = weight;
-        }
+        };
+        for (int x = xs.begin; x < in_begin; ++x)
+            clipped(x);
+        std::fill_n(m_weights.data() + (in_begin - xs.begin), in_end - in_begin, interior);
+        for (int x = in_end; x < xs.end; ++x)
+            clipped(x);
     }
 
     // The weighted column sums of columns `cols` for row y.
