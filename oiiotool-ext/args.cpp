@@ -166,7 +166,9 @@ const std::vector<OptionSpec>& option_table()
           "Refuse, with an error naming the file, an image or a frame whose pixels need more than MB MiB "
           "(default: the machine's physical memory). Checked from the file headers before allocating.",
           [](Options& o, const std::vector<std::string>& a) { o.memory_limit_mb = parse_memory_limit(a[0]); } },
-        { "runstats", {}, "Diagnostics", "Print time per command, I/O time and peak memory at the end.",
+        { "runstats", {}, "Diagnostics",
+          "Print time per command (the total, and over a sequence its fastest call), I/O time and peak "
+          "memory at the end.",
           [](Options& o, const std::vector<std::string>&) { o.runstats = true; } },
         { "v", {}, "Diagnostics", "Verbose: the channels used for each role, and each step.",
           [](Options& o, const std::vector<std::string>&) { o.verbose = true; } },

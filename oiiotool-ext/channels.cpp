@@ -5,6 +5,7 @@
 #include "error.h"
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagebufalgo_util.h>
 #include <OpenImageIO/strutil.h>
 
 #include <algorithm>
@@ -104,6 +105,25 @@ std::vector<int> matching_components(const ImageSpec& spec, const std::vector<in
     return matched;
 }
 
+/// The spec of channels `indices` of an image of spec `from`, as float:
+/// its windows and metadata, those channels' names, alpha and depth.
+ImageSpec extracted_spec(const ImageSpec& from, const std::vector<int>& indices)
+{
+    ImageSpec spec = from;
+    spec.set_format(OIIO::TypeDesc::FLOAT);
+    spec.nchannels = int(indices.size());
+    spec.channelnames.clear();
+    spec.alpha_channel = spec.z_channel = -1;
+    for (int c : indices) {
+        if (c == from.alpha_channel)
+            spec.alpha_channel = int(spec.channelnames.size());
+        if (c == from.z_channel)
+            spec.z_channel = int(spec.channelnames.size());
+        spec.channelnames.push_back(from.channel_name(c));
+    }
+    return spec;
+}
+
 }  // namespace
 
 std::string channel_names(const ImageSpec& spec, const std::vector<int>& indices)
@@ -170,9 +190,27 @@ Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selec
 
 ImageBuf extract_channels(const ImageBuf& src, const std::vector<int>& indices)
 {
-    ImageBuf out;
-    if (!OIIO::ImageBufAlgo::channels(out, src, int(indices.size()), indices))
-        throw RunError(format("cannot extract channels: {}", one_line(out.geterror())));
+    const ImageSpec& from = src.spec();
+    const bool gather = from.format == OIIO::TypeDesc::FLOAT && from.channelformats.empty()
+                        && src.localpixels() && from.depth == 1;
+    if (!gather) {
+        ImageBuf out;
+        if (!OIIO::ImageBufAlgo::channels(out, src, int(indices.size()), indices))
+            throw RunError(format("cannot extract channels: {}", one_line(out.geterror())));
+        return out;
+    }
+    ImageBuf out(extracted_spec(from, indices), OIIO::InitializePixels::No);
+    const int n = int(indices.size()), width = from.width;
+    const size_t step = size_t(src.pixel_stride()) / sizeof(float);
+    OIIO::ImageBufAlgo::parallel_image(src.roi(), [&](OIIO::ROI rows) {
+        for (int y = rows.ybegin; y < rows.yend; ++y) {
+            const float* in = static_cast<const float*>(src.pixeladdr(from.x, y, from.z));
+            float* o        = static_cast<float*>(out.pixeladdr(from.x, y, from.z));
+            for (int x = 0; x < width; ++x, in += step, o += n)
+                for (int c = 0; c < n; ++c)
+                    o[c] = in[indices[size_t(c)]];
+        }
+    });
     return out;
 }
 

@@ -42,13 +42,26 @@ void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::
                           window_text(g), window_text(b)));
 }
 
+std::set<Role> roles_used(const std::vector<Step>& steps)
+{
+    std::set<Role> used;
+    for (const Step& step : steps)
+        if (step.command) {
+            used.insert(step.command->roles.begin(), step.command->roles.end());
+            used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
+        }
+    return used;
+}
+
 Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
                    const Options& options, const PathForFrame& frame_path_of, ImageFiles& files)
 {
     Guides guides;
     int beauty_channels = int(found.beauty.size());
+    const std::set<Role> used = roles_used(options.steps);
     for (const auto& [role, indices] : found.roles) {
-        guides.images[role] = extract_channels(input, indices);
+        if (used.count(role))
+            guides.images[role] = extract_channels(input, indices);
         guides.sources[role] = format("{}: {}", input_path, channel_names(input.spec(), indices));
     }
     for (const AovRequest& aov : options.aovs) {

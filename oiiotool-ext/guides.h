@@ -9,6 +9,7 @@
 #include "options.h"
 
 #include <functional>
+#include <set>
 #include <string>
 
 namespace mcdtool {
@@ -16,7 +17,12 @@ namespace mcdtool {
 /// Maps a path as typed (maybe a frame pattern) to this frame's file.
 using PathForFrame = std::function<std::string(const std::string&)>;
 
-/// Every guide of one frame.
+/// The guide roles the commands of `steps` need or use when present.
+std::set<Role> roles_used(const std::vector<Step>& steps);
+
+/// The guides of one frame: every --aov file, and each guide discovered in
+/// `input` that a command of `options.steps` needs or uses (the others only
+/// get a source, for -v).
 Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
                    const Options& options, const PathForFrame& frame_path_of, ImageFiles& files);
 

@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/strutil.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -34,10 +35,11 @@ void RunStats::add_command(const std::string& command, double seconds)
     for (Entry& entry : commands_)
         if (entry.command == command) {
             entry.seconds += seconds;
+            entry.fastest = std::min(entry.fastest, seconds);
             ++entry.calls;
             return;
         }
-    commands_.push_back(Entry{ command, seconds, 1 });
+    commands_.push_back(Entry{ command, seconds, seconds, 1 });
 }
 
 std::string RunStats::report() const
@@ -51,7 +53,10 @@ std::string RunStats::report() const
     row("read time", format("{:.3f} s", read_seconds_));
     row("write time", format("{:.3f} s", write_seconds_));
     for (const Entry& entry : commands_)
-        row(entry.command, format("{:.3f} s ({} call{})", entry.seconds, entry.calls, entry.calls == 1 ? "" : "s"));
+        row(entry.command, entry.calls == 1
+                               ? format("{:.3f} s (1 call)", entry.seconds)
+                               : format("{:.3f} s ({} calls, fastest {:.4f} s)", entry.seconds,
+                                        entry.calls, entry.fastest));
     row("peak memory", format("{:.1f} MB", double(peak_memory_bytes()) / bytes_per_mebibyte));
     return text;
 }

@@ -250,6 +250,31 @@ def test_robust_guides_with_other_covering_data_windows(tmp_path):
     np.testing.assert_array_equal(a, b)
 
 
+def test_robust_guide_channels_come_in_the_selector_order(tmp_path):
+    """A guide picked from scattered channels in another order holds them in
+    the order typed: the same result as a file that stores them that way."""
+    require_command("--normal-gaussian")
+    beauty, ids, _, _ = noisy_scene()
+    rng = np.random.default_rng(11)
+    normal = rng.normal(0.0, 1.0, ids.shape + (3,)).astype(np.float32)
+    scattered = np.concatenate([normal[..., 2:3], beauty, normal[..., 0:1], ids[..., None],
+                                normal[..., 1:2]], axis=2)
+    src = write_image(tmp_path / "scattered.exr", scattered, ["nz", "R", "G", "B", "nx", "id", "ny"],
+                      fmt="float", origin=(2, 5))
+    ordered = write_image(tmp_path / "normal.exr", normal, ["X", "Y", "Z"], fmt="float", origin=(2, 5))
+    r = run(src, "--aov", f"normal={src}:nx,ny,nz", "--normal-gaussian", 5, "-o", tmp_path / "a.exr")
+    assert r.code == 0, r
+    r = run(src, "--aov", f"normal={ordered}", "--normal-gaussian", 5, "-o", tmp_path / "b.exr")
+    assert r.code == 0, r
+    a, _ = read_image(tmp_path / "a.exr")
+    b, _ = read_image(tmp_path / "b.exr")
+    np.testing.assert_array_equal(a, b)
+    r = run(src, "--aov", f"normal={src}:nz,ny,nx", "--normal-gaussian", 5, "-o", tmp_path / "c.exr")
+    assert r.code == 0, r
+    c, _ = read_image(tmp_path / "c.exr")
+    assert not np.array_equal(a, c)
+
+
 # --- determinism ------------------------------------------------------------------
 
 def test_robust_threads_give_bit_identical_files(testrender_exr, tmp_path):
