@@ -45,7 +45,7 @@ struct LargeBufferAllocator {
     }
 
     /// Elements are default-initialised: a plane's values are all written
-    /// once they are read, so zeroing them first would be wasted.
+    /// before they are read, so zeroing them first would be wasted.
     template<class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
     {
