@@ -47,6 +47,43 @@ MCD_BENCH(object_gaussian, object_gaussian(r.beauty, r.object_id, s));
 MCD_BENCH(brdf_gaussian, brdf_gaussian(r.beauty, r.object_id, r.reflect_id, s));
 MCD_BENCH(normal_gaussian, normal_gaussian(r.beauty, r.object_id, r.normal, s));
 
+/// The scene's beauty on one curved object: a sphere-like normal field in
+/// which no two neighbours are alike (smooth-shaded meshes in production
+/// renders), so no window takes the fast path.
+const testimg::Render& curved_scene()
+{
+    static const testimg::Render curved = [] {
+        testimg::Render r;
+        r.beauty.copy(scene().beauty);
+        const OIIO::ROI roi = r.beauty.roi();
+        OIIO::ROI plane = roi;
+        plane.chbegin   = 0;
+        plane.chend     = 1;
+        r.object_id.reset(OIIO::ImageSpec(plane, OIIO::TypeDesc::FLOAT));  // all zero
+        plane.chend = 3;
+        r.normal.reset(OIIO::ImageSpec(plane, OIIO::TypeDesc::FLOAT));
+        const float cx = float(roi.xbegin + roi.xend) / 2, cy = float(roi.ybegin + roi.yend) / 2;
+        const float radius = float(roi.width());
+        for (OIIO::ImageBuf::Iterator<float> it(r.normal); !it.done(); ++it) {
+            it[0] = (float(it.x()) - cx) / radius;
+            it[1] = (float(it.y()) - cy) / radius;
+            it[2] = 1.0f;
+        }
+        return r;
+    }();
+    return curved;
+}
+
+void BM_normal_mean_curved(benchmark::State& state)
+{
+    curved_scene();  // made before the clock starts
+    run(state, [](const testimg::Render&, int s) {
+        const testimg::Render& r = curved_scene();
+        return normal_mean(r.beauty, r.object_id, r.normal, s);
+    });
+}
+BENCHMARK(BM_normal_mean_curved)->Arg(3)->Arg(7)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_object_mean_19(benchmark::State& state)
 {
     run(state, [](const testimg::Render& r, int) { return object_mean(r.beauty, r.object_id, 19); });

@@ -266,6 +266,30 @@ TEST_P(GuidedFilters, NonFiniteBeautyNeverPropagates)
     expect_matches_spec(GetParam(), beauty, g, 7);
 }
 
+TEST_P(GuidedFilters, SmoothCurvedSurfacesMatchSpecAtEverySize)
+{
+    // A sphere-like normal field (no two neighbours alike, every window
+    // smooth enough for the normal filters' dot-weighted sums), two objects
+    // and a sprinkle of non-finite values: windows up to 21 wide, clipped at
+    // every edge.
+    const int w = 83, h = 64;
+    ImageBuf beauty = testimg::random_image(w, h, 3, 51, 0.0f, 5.0f);
+    testimg::sprinkle_nonfinite(beauty, 0.02, 52);
+    std::vector<float> ids(size_t(w) * h), normals(size_t(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            ids[i]         = float(x < 2 * y ? 4 : 9);
+            const float n[3] = { float(x - 30) / 40.0f, float(y - 20) / 40.0f, 1.0f };
+            std::copy(n, n + 3, normals.begin() + std::ptrdiff_t(i) * 3);
+        }
+    Guides g   = make_guides(w, h, 53);
+    g.ids      = testimg::from_values(w, h, 1, TypeDesc::FLOAT, 0, 0, ids);
+    g.normals  = testimg::from_values(w, h, 3, TypeDesc::FLOAT, 0, 0, normals);
+    for (int size : { 3, 7, 13, 21 })
+        expect_matches_spec(GetParam(), beauty, g, size);
+}
+
 TEST_P(GuidedFilters, NonZeroOriginAndStrictSubRoi)
 {
     const ImageBuf beauty = testimg::random_image(64, 50, 3, 8, 0.0f, 1.0f, TypeDesc::FLOAT,

@@ -6,10 +6,12 @@
 // or, where every pixel has its own key, for all of a run's pixels at once.
 #pragma once
 
+#include "dot_weighted_mean.h"
 #include "separable_mean.h"
 #include "window.h"
 
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace mcdenoise {
@@ -250,14 +252,24 @@ inline int fast_segment_end(const uint8_t* uniform, int first, int n, int gap)
     return end;
 }
 
+/// True for a rule whose guide weight is, on some windows, the dot product
+/// of the center's and the neighbour's vectors: it provides
+/// `smooth_row(y, xs, out)` (1 where (x, y)'s window is one of them) and
+/// `dot_vectors()` (the plane of those vectors).
+template<class Rule, class = void>
+struct has_dot_weights : std::false_type {};
+template<class Rule>
+struct has_dot_weights<Rule, std::void_t<decltype(&Rule::smooth_row)>> : std::true_type {};
+
 /// The guided weighted mean over the pixels of `strip` that `select` picks
 /// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
 /// to filter, 0 for the others). Pixels whose windows `rule.uniform_row`
 /// marks wholly viable with weight 1 come from the separable fast path; the
-/// others from `guided_mean_run`, in runs of equal `rule.key(x, y)` (a
-/// value whose equality implies equal guide weights), or from
-/// `guided_mean_lanes` where consecutive pixels each have their own key
-/// (the results are the same either way). Rows with no selected
+/// others, where the rule has dot weights and the window is smooth, from
+/// `dot_weighted_means`; the rest from `guided_mean_run`, in runs of equal
+/// `rule.key(x, y)` (a value whose equality implies equal guide weights),
+/// or from `guided_mean_lanes` where consecutive pixels each have their own
+/// key (the results are the same either way). Rows with no selected
 /// pixel are skipped. With `AllSelected`, fast rows are written straight
 /// into `result` and only the other pixels are overwritten.
 template<bool AllSelected = false, class Rule, class Select>
@@ -273,6 +285,8 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
     std::vector<uint8_t> done(static_cast<size_t>(w));  // fast, or not chosen
     GuidedScratch scratch(w + 2 * src.kernel.radius, src.block().nchannels);
     LaneScratch lanes(w, src.block().nchannels);
+    std::vector<uint8_t> smooth(has_dot_weights<Rule>::value ? size_t(w) : 0);
+    DotScratch dot_scratch;
     const OIIO::ROI& reg = src.block().region;
     const std::ptrdiff_t stride = result.pixel_stride();
     int64_t empty = 0;
@@ -309,6 +323,21 @@ void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& se
                         std::copy_n(fast_row.data() + size_t(i) * nc, nc,
                                     out_row + std::ptrdiff_t(i) * stride);
             first = next_byte(uniform.data(), end, w, 1);
+        }
+        if constexpr (has_dot_weights<Rule>::value) {
+            rule.smooth_row(y, Span { strip.xbegin, strip.xend }, smooth.data());
+            for (int i = 0; i < w; ++i)
+                smooth[size_t(i)] &= !done[size_t(i)];
+            for (int first = next_byte(smooth.data(), 0, w, 1); first < w;) {
+                const int end = fast_segment_end(smooth.data(), first, w, gap);
+                empty += dot_weighted_means(src, rule.dot_vectors(), strip.xbegin + first,
+                                            strip.xbegin + end, y, smooth.data() + first,
+                                            dot_scratch, out_row + std::ptrdiff_t(first) * stride,
+                                            stride);
+                first = next_byte(smooth.data(), end, w, 1);
+            }
+            for (int i = 0; i < w; ++i)
+                done[size_t(i)] |= smooth[size_t(i)];
         }
         // The other chosen pixels (few away from guide edges), in runs of
         // one center key; consecutive runs of one pixel whose windows lie

@@ -5,6 +5,7 @@
 #include "guide_rules.h"
 #include "window_filter.h"
 
+#include <cmath>
 #include <tuple>
 
 namespace mcdenoise {
@@ -25,12 +26,27 @@ float normal_weight(const UnitNormal& a, const UnitNormal& b)
     return same ? 1.0f : positive;
 }
 
+// The cosine of the largest angle between neighbouring normals that keeps
+// every normal of a window of radius r within 80 degrees of the center's:
+// any pixel of the window is at most 2r steps from the center, and angles
+// add up at most along the steps. 1 (no smooth windows) below radius 2:
+// the dot-weighted sums cost O(r) per pixel against the exact weights'
+// O(r^2), the same at radius 1 (measured in docs/benchmark_history.md).
+float smooth_step_cosine(int r)
+{
+    constexpr double window_spread_degrees = 80.0, degrees = 3.14159265358979323846 / 180.0;
+    return r >= 2 ? float(std::cos(window_spread_degrees / (2 * r) * degrees)) : 1.0f;
+}
+
 // Normal rule: q viable iff it shares the object id; weight by normals. A
-// window is uniform when it is one object with one normal.
+// window is uniform (key 0) when it is one object with one normal, smooth
+// (key 1) when it is one object whose neighbouring normals turn by less than
+// smooth_step_cosine: every dot in it is then positive, so the weight is the
+// plain dot product.
 struct SameObjectWeightedByNormal {
     const IdPlane& ids;
     const GuidePlane<UnitNormal>& normals;
-    UniformMap same_object_and_normal;
+    UniformMap windows;
 
     /// The weights depend on the center's id and normal alone: equal ones
     /// share window columns (flat surfaces next to an edge).
@@ -40,10 +56,9 @@ struct SameObjectWeightedByNormal {
         return { ids.at(x, y), n.x, n.y, n.z };
     }
 
-    void uniform_row(int y, Span xs, uint8_t* out) const
-    {
-        same_object_and_normal.uniform_row(y, xs, 1, out);
-    }
+    void uniform_row(int y, Span xs, uint8_t* out) const { windows.uniform_row(y, xs, 1, out); }
+    void smooth_row(int y, Span xs, uint8_t* out) const { windows.uniform_row(y, xs, 2, out); }
+    const GuidePlane<UnitNormal>& dot_vectors() const { return normals; }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         const Id* id = ids.from(xs.begin, qy);
@@ -81,12 +96,17 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         return false;
     const Id* id = ids.values.data();
     const UnitNormal* n = normals.values.data();
+    const float smooth  = smooth_step_cosine(size / 2);
     const SameObjectWeightedByNormal rule {
         ids, normals,
         uniform_map(key_changes(ids.region, nthreads,
-                                [id, n](size_t i, size_t j) {
-                                    return uint8_t((id[i] != id[j]) | (n[i].x != n[j].x)
-                                                   | (n[i].y != n[j].y) | (n[i].z != n[j].z));
+                                [id, n, smooth](size_t i, size_t j) {
+                                    const bool other = id[i] != id[j];
+                                    const bool turns = (n[i].x != n[j].x) | (n[i].y != n[j].y)
+                                                       | (n[i].z != n[j].z);
+                                    const float dot
+                                        = n[i].x * n[j].x + n[i].y * n[j].y + n[i].z * n[j].z;
+                                    return uint8_t((other | turns) | (other | !(dot > smooth)) << 1);
                                 }),
                     roi, size / 2, nthreads)
     };
