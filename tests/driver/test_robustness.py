@@ -229,6 +229,13 @@ def test_robust_data_windows_are_filtered_and_kept(tmp_path, name, origin, size)
     np.testing.assert_array_equal(out, median_reference(pixels, 5))
 
 
+def filtered(src, out, *args):
+    """The pixels and spec mcdtool writes to `out` from `src` with `args`."""
+    r = run(src, *args, "-o", out)
+    assert r.code == 0, r
+    return read_image(out)
+
+
 def test_robust_guides_with_other_covering_data_windows(tmp_path):
     require_command("--object-median")
     beauty, ids, *_ = noisy_scene()
@@ -240,12 +247,8 @@ def test_robust_guides_with_other_covering_data_windows(tmp_path):
     big[5:-5, 5:-5, 0] = ids
     big_ids = write_image(tmp_path / "big_ids.exr", big, ["Y"], fmt="float", origin=(-2, -7))
     exact_ids = write_image(tmp_path / "ids.exr", ids[..., None], ["Y"], fmt="float", origin=(3, -2))
-    r = run(src, "--aov", f"id={big_ids}", "--object-median", 5, "-o", tmp_path / "a.exr")
-    assert r.code == 0, r
-    r = run(src, "--aov", f"id={exact_ids}", "--object-median", 5, "-o", tmp_path / "b.exr")
-    assert r.code == 0, r
-    a, a_spec = read_image(tmp_path / "a.exr")
-    b, _ = read_image(tmp_path / "b.exr")
+    a, a_spec = filtered(src, tmp_path / "a.exr", "--aov", f"id={big_ids}", "--object-median", 5)
+    b, _ = filtered(src, tmp_path / "b.exr", "--aov", f"id={exact_ids}", "--object-median", 5)
     assert (a_spec.x, a_spec.y, a_spec.width, a_spec.height) == (3, -2, w, h)
     np.testing.assert_array_equal(a, b)
 
@@ -262,16 +265,10 @@ def test_robust_guide_channels_come_in_the_selector_order(tmp_path):
     src = write_image(tmp_path / "scattered.exr", scattered, ["nz", "R", "G", "B", "nx", "id", "ny"],
                       fmt="float", origin=(2, 5))
     ordered = write_image(tmp_path / "normal.exr", normal, ["X", "Y", "Z"], fmt="float", origin=(2, 5))
-    r = run(src, "--aov", f"normal={src}:nx,ny,nz", "--normal-gaussian", 5, "-o", tmp_path / "a.exr")
-    assert r.code == 0, r
-    r = run(src, "--aov", f"normal={ordered}", "--normal-gaussian", 5, "-o", tmp_path / "b.exr")
-    assert r.code == 0, r
-    a, _ = read_image(tmp_path / "a.exr")
-    b, _ = read_image(tmp_path / "b.exr")
+    a, _ = filtered(src, tmp_path / "a.exr", "--aov", f"normal={src}:nx,ny,nz", "--normal-gaussian", 5)
+    b, _ = filtered(src, tmp_path / "b.exr", "--aov", f"normal={ordered}", "--normal-gaussian", 5)
     np.testing.assert_array_equal(a, b)
-    r = run(src, "--aov", f"normal={src}:nz,ny,nx", "--normal-gaussian", 5, "-o", tmp_path / "c.exr")
-    assert r.code == 0, r
-    c, _ = read_image(tmp_path / "c.exr")
+    c, _ = filtered(src, tmp_path / "c.exr", "--aov", f"normal={src}:nz,ny,nx", "--normal-gaussian", 5)
     assert not np.array_equal(a, c)
 
 
