@@ -6,6 +6,8 @@
 
 #include <OpenImageIO/strutil.h>
 
+#include <set>
+
 namespace mcdtool {
 
 using OIIO::Strutil::fmt::format;
@@ -30,6 +32,18 @@ void require_channel_count(const RoleInfo& info, int nchannels, int beauty_chann
                           context, info.name, need, nchannels, channels));
 }
 
+/// The guide roles the commands of `steps` need or use when present.
+std::set<Role> roles_used(const std::vector<Step>& steps)
+{
+    std::set<Role> used;
+    for (const Step& step : steps)
+        if (step.command) {
+            used.insert(step.command->roles.begin(), step.command->roles.end());
+            used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
+        }
+    return used;
+}
+
 }  // namespace
 
 void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::string& context)
@@ -40,17 +54,6 @@ void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::
         return;
     throw RunError(format("{} : data window {} does not cover the beauty's data window {}", context,
                           window_text(g), window_text(b)));
-}
-
-std::set<Role> roles_used(const std::vector<Step>& steps)
-{
-    std::set<Role> used;
-    for (const Step& step : steps)
-        if (step.command) {
-            used.insert(step.command->roles.begin(), step.command->roles.end());
-            used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
-        }
-    return used;
 }
 
 Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,

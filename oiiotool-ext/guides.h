@@ -9,16 +9,12 @@
 #include "options.h"
 
 #include <functional>
-#include <set>
 #include <string>
 
 namespace mcdtool {
 
 /// Maps a path as typed (maybe a frame pattern) to this frame's file.
 using PathForFrame = std::function<std::string(const std::string&)>;
-
-/// The guide roles the commands of `steps` need or use when present.
-std::set<Role> roles_used(const std::vector<Step>& steps);
 
 /// The guides of one frame: every --aov file, and each guide discovered in
 /// `input` that a command of `options.steps` needs or uses (the others only
