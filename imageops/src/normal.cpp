@@ -15,15 +15,26 @@ using OIIO::ROI;
 
 namespace {
 
+// The dot product of two normals, in float.
+float dot(const UnitNormal& a, const UnitNormal& b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// True when the two normals are the same three values.
+bool same_normal(const UnitNormal& a, const UnitNormal& b)
+{
+    return (a.x == b.x) & (a.y == b.y) & (a.z == b.z);
+}
+
 // SPEC.md's normal weight: max(0, dot) of unit normals; 1 when both are
 // missing, 0 when one is. Identical normals weigh exactly 1, which also
 // covers two missing (all-zero) normals; one missing gives a zero dot.
 float normal_weight(const UnitNormal& a, const UnitNormal& b)
 {
-    const bool same = (a.x == b.x) & (a.y == b.y) & (a.z == b.z);
-    const float dot = a.x * b.x + a.y * b.y + a.z * b.z;
-    const float positive = dot > 0.0f ? dot : 0.0f;
-    return same ? 1.0f : positive;
+    const float d        = dot(a, b);
+    const float positive = d > 0.0f ? d : 0.0f;
+    return same_normal(a, b) ? 1.0f : positive;
 }
 
 // The cosine of the largest angle between neighbouring normals that keeps
@@ -102,11 +113,9 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         uniform_map(key_changes(ids.region, nthreads,
                                 [id, n, smooth](size_t i, size_t j) {
                                     const bool other = id[i] != id[j];
-                                    const bool turns = (n[i].x != n[j].x) | (n[i].y != n[j].y)
-                                                       | (n[i].z != n[j].z);
-                                    const float dot
-                                        = n[i].x * n[j].x + n[i].y * n[j].y + n[i].z * n[j].z;
-                                    return uint8_t((other | turns) | (other | !(dot > smooth)) << 1);
+                                    const bool turns = !same_normal(n[i], n[j]);
+                                    const bool steep = !(dot(n[i], n[j]) > smooth);
+                                    return uint8_t((other | turns) | (other | steep) << 1);
                                 }),
                     roi, size / 2, nthreads)
     };
