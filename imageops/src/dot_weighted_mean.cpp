@@ -20,33 +20,33 @@ int products_per_column(const SeparableSource& src)
 /// plane 3c + k, and (unless masked) wy * n_k to plane 3 per + k. `Per` is
 /// the block's value count (0: read from the block).
 template<int Per>
-void add_row_products_of(const SeparableSource& src, const GuidePlane<UnitNormal>& vectors,
+void add_row_products_of(const SeparableSource& src, const NormalPlanes& vectors,
                          int qy, Span cols, double wy, double* sum, size_t wide)
 {
     const int per = Per ? Per : src.block().nchannels, m = cols.size();
     const float* v      = src.block().pixel(cols.begin, qy);
-    const UnitNormal* n = vectors.from(cols.begin, qy);
+    const NormalRow n   = vectors.from(cols.begin, qy);
     for (int c = 0; c < per; ++c, sum += 3 * wide) {
         double *x = sum, *y = sum + wide, *z = sum + 2 * wide;
         for (int i = 0; i < m; ++i) {
             const double value = v[i * per + c];
-            x[i] += wy * (n[i].x * value);
-            y[i] += wy * (n[i].y * value);
-            z[i] += wy * (n[i].z * value);
+            x[i] += wy * (n.x[i] * value);
+            y[i] += wy * (n.y[i] * value);
+            z[i] += wy * (n.z[i] * value);
         }
     }
     if (!src.masked) {
         double *x = sum, *y = sum + wide, *z = sum + 2 * wide;
         for (int i = 0; i < m; ++i) {
-            x[i] += wy * n[i].x;
-            y[i] += wy * n[i].y;
-            z[i] += wy * n[i].z;
+            x[i] += wy * n.x[i];
+            y[i] += wy * n.y[i];
+            z[i] += wy * n.z[i];
         }
     }
 }
 
 /// `add_row_products_of` for the usual value counts.
-void add_row_products(const SeparableSource& src, const GuidePlane<UnitNormal>& vectors, int qy,
+void add_row_products(const SeparableSource& src, const NormalPlanes& vectors, int qy,
                       Span cols, double wy, double* sum, size_t wide)
 {
     switch (src.block().nchannels) {
@@ -87,7 +87,7 @@ double dot(const UnitNormal& n, const double* m, size_t step)
 constexpr int pixels_per_pass = 64;
 
 /// `dot_weighted_means` for at most `pixels_per_pass` pixels.
-int dot_weighted_pass(const SeparableSource& src, const GuidePlane<UnitNormal>& vectors, int xb,
+int dot_weighted_pass(const SeparableSource& src, const NormalPlanes& vectors, int xb,
                       int xe, int y, const uint8_t* chosen, DotScratch& scratch, float* out,
                       std::ptrdiff_t stride)
 {
@@ -113,7 +113,7 @@ int dot_weighted_pass(const SeparableSource& src, const GuidePlane<UnitNormal>& 
     for (int i = 0; i < n; ++i) {
         if (!chosen[i])
             continue;
-        const UnitNormal& v = vectors.at(xb + i, y);
+        const UnitNormal v  = vectors.at(xb + i, y);
         const double* sums  = window + i;
         float* o            = out + std::ptrdiff_t(i) * stride;
         for (int c = 0; c < nc; ++c) {
@@ -129,7 +129,7 @@ int dot_weighted_pass(const SeparableSource& src, const GuidePlane<UnitNormal>& 
 
 }  // namespace
 
-int dot_weighted_means(const SeparableSource& src, const GuidePlane<UnitNormal>& vectors,
+int dot_weighted_means(const SeparableSource& src, const NormalPlanes& vectors,
                        int xb, int xe, int y, const uint8_t* chosen, DotScratch& scratch,
                        float* out, std::ptrdiff_t stride)
 {

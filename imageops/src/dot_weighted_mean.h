@@ -30,7 +30,7 @@ struct DotScratch {
 /// Sums run in double from exact products, in a fixed order, so a pixel's
 /// value does not depend on the run it is part of. `vectors` must cover the
 /// block. Returns the count of channels with no contribution (set to 0).
-int dot_weighted_means(const SeparableSource& src, const GuidePlane<UnitNormal>& vectors,
+int dot_weighted_means(const SeparableSource& src, const NormalPlanes& vectors,
                        int xb, int xe, int y, const uint8_t* chosen, DotScratch& scratch,
                        float* out, std::ptrdiff_t stride);
 

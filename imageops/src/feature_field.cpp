@@ -175,19 +175,16 @@ bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
         }
     }
     if (guides.normal && sigmas.normal > 0.0f) {
-        GuidePlane<UnitNormal> normals;
+        NormalPlanes normals;
         if (!load_normals(op, dst, *guides.normal, region, nthreads, normals))
             return false;
         const float s = feature_scale(sigmas.normal);
-        std::vector<float> nx = plane_of(region), ny = plane_of(region), nz = plane_of(region);
-        for (size_t i = 0; i < normals.values.size(); ++i) {
-            nx[i] = normals.values[i].x * s;
-            ny[i] = normals.values[i].y * s;
-            nz[i] = normals.values[i].z * s;
+        for (const LargeVector<float>* component : { &normals.x, &normals.y, &normals.z }) {
+            std::vector<float> plane = plane_of(region);
+            for (size_t i = 0; i < plane.size(); ++i)
+                plane[i] = (*component)[i] * s;
+            field.dims.push_back(std::move(plane));
         }
-        field.dims.push_back(std::move(nx));
-        field.dims.push_back(std::move(ny));
-        field.dims.push_back(std::move(nz));
     }
     if (guides.depth && sigmas.depth > 0.0f) {
         GuidePlane<float> depths;

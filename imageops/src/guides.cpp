@@ -43,19 +43,18 @@ bool check_guide(const char* op, const char* name, ImageBuf& dst, const ImageBuf
 namespace {
 
 // Reads `guide` over `region` as `Raw` values and maps them row piece by row
-// piece through `convert(raw, nc, n, inside, out)` (n pixels of nc values
-// into `out`; `inside`: within the guide's data window), strip by strip on
-// `nthreads` threads, a few rows at a time so the raw values stay in cache.
-// Float values are read in place where the guide holds them.
-template<class T, class Raw, class Convert>
-bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
-                int nthreads, GuidePlane<T>& plane, Convert&& convert)
+// piece through `convert(raw, nc, n, inside, first)` (n pixels of nc values,
+// for the pixels [first, first + n) of `region` in row-major order;
+// `inside`: within the guide's data window), strip by strip on `nthreads`
+// threads, a few rows at a time so the raw values stay in cache. Float
+// values are read in place where the guide holds them.
+template<class Raw, class Convert>
+bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
+               int nthreads, Convert&& convert)
 {
     constexpr size_t chunk_values = 16384;
     const int nc = guide.nchannels();
     const ROI dw = guide.roi();
-    plane.region = region;
-    plane.values.resize(size_t(region.width()) * region.height());
     std::atomic<bool> ok { true };
     ROI rows    = region;
     rows.chbegin = 0;
@@ -82,7 +81,8 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
             if (!ok)
                 return;
             for (int y = part.ybegin; y < part.yend; ++y, in += row_stride) {
-                T* out = plane.values.data() + plane.index(part.xbegin, y);
+                const size_t out = size_t(y - region.ybegin) * region.width()
+                                   + size_t(part.xbegin - region.xbegin);
                 const bool row_inside = y >= dw.ybegin && y < dw.yend;
                 const int x0
                     = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
@@ -100,6 +100,22 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
         return false;
     }
     return true;
+}
+
+// `load_rows` into `plane`, sized to `region`: `convert(raw, nc, n, inside,
+// out)` writes n values from `out` on.
+template<class T, class Raw, class Convert>
+bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
+                int nthreads, GuidePlane<T>& plane, Convert&& convert)
+{
+    plane.region = region;
+    plane.values.resize(size_t(region.width()) * region.height());
+    T* values = plane.values.data();
+    return load_rows<Raw>(op, dst, guide, region, nthreads,
+                          [&convert, values](const Raw* in, int nc, int n, bool inside,
+                                             size_t first) {
+                              convert(in, nc, n, inside, values + first);
+                          });
 }
 
 // Reads `ids` over `region` through `convert` (load_plane's row form) into
@@ -239,19 +255,29 @@ bool load_reflect_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const 
 }
 
 bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const ROI& region,
-                  int nthreads, GuidePlane<UnitNormal>& plane)
+                  int nthreads, NormalPlanes& planes)
 {
-    return load_plane<UnitNormal, float>(
-        op, dst, normals, region, nthreads, plane,
-        each_pixel([](const float* n, bool inside) {  // branch-free: the compiler vectorises it
-            const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1]
-                                         + double(n[2]) * n[2]);
-            const bool usable = inside & (len > 0.0) & (len <= std::numeric_limits<double>::max());
-            const double scale = 1.0 / (usable ? len : 1.0);  // one division, not three
-            const UnitNormal unit { float(n[0] * scale), float(n[1] * scale),
-                                    float(n[2] * scale) };
-            return usable ? unit : UnitNormal {};
-        }));
+    const size_t n = size_t(region.width()) * region.height();
+    planes.region  = region;
+    planes.x.resize(n);
+    planes.y.resize(n);
+    planes.z.resize(n);
+    float *x = planes.x.data(), *y = planes.y.data(), *z = planes.z.data();
+    return load_rows<float>(
+        op, dst, normals, region, nthreads,
+        [x, y, z](const float* in, int nc, int count, bool inside, size_t first) {
+            for (int i = 0; i < count; ++i) {  // branch-free: the compiler vectorises it
+                const float* v = in + std::ptrdiff_t(i) * nc;
+                const double len = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1]
+                                             + double(v[2]) * v[2]);
+                const bool usable
+                    = inside & (len > 0.0) & (len <= std::numeric_limits<double>::max());
+                const double scale = 1.0 / (usable ? len : 1.0);  // one division, not three
+                x[first + i]       = usable ? float(v[0] * scale) : 0.0f;
+                y[first + i]       = usable ? float(v[1] * scale) : 0.0f;
+                z[first + i]       = usable ? float(v[2] * scale) : 0.0f;
+            }
+        });
 }
 
 bool load_depths(const char* op, ImageBuf& dst, const ImageBuf& depth, const ROI& region,

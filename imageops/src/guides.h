@@ -60,10 +60,34 @@ struct UnitNormal {
     float x, y, z;  ///< `UnitNormal {}` is all zero
 };
 
+/// Normals from one pixel on, read from three component planes.
+struct NormalRow {
+    const float *x, *y, *z;
+
+    /// The normal `i` pixels on.
+    UnitNormal operator[](size_t i) const { return { x[i], y[i], z[i] }; }
+};
+
+/// Unit normals over `region`, one plane per component (row-major, as
+/// `GuidePlane`), so loops along a row read each as contiguous floats.
+struct NormalPlanes {
+    OIIO::ROI region;
+    LargeVector<float> x, y, z;
+
+    /// The normals from (px, py) on along row py (and the rows below).
+    NormalRow from(int px, int py) const
+    {
+        const size_t i = size_t(py - region.ybegin) * region.width()
+                         + size_t(px - region.xbegin);
+        return { x.data() + i, y.data() + i, z.data() + i };
+    }
+    UnitNormal at(int px, int py) const { return from(px, py)[0]; }
+};
+
 /// Normals over `region`, normalised; zero-length or non-finite ones (and
 /// pixels outside the guide's data window) as "no normal".
 bool load_normals(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& normals,
-                  const OIIO::ROI& region, int nthreads, GuidePlane<UnitNormal>& plane);
+                  const OIIO::ROI& region, int nthreads, NormalPlanes& planes);
 
 /// Depths at or beyond this are "infinitely far" (Cycles marks background
 /// with 1e10).

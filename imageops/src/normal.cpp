@@ -56,39 +56,39 @@ float smooth_step_cosine(int r)
 // plain dot product.
 struct SameObjectWeightedByNormal {
     const IdPlane& ids;
-    const GuidePlane<UnitNormal>& normals;
+    const NormalPlanes& normals;
     UniformMap windows;
 
     /// The weights depend on the center's id and normal alone: equal ones
     /// share window columns (flat surfaces next to an edge).
     std::tuple<Id, float, float, float> key(int x, int y) const
     {
-        const UnitNormal& n = normals.at(x, y);
+        const UnitNormal n = normals.at(x, y);
         return { ids.at(x, y), n.x, n.y, n.z };
     }
 
     void uniform_row(int y, Span xs, uint8_t* out) const { windows.uniform_row(y, xs, 1, out); }
     void smooth_row(int y, Span xs, uint8_t* out) const { windows.uniform_row(y, xs, 2, out); }
-    const GuidePlane<UnitNormal>& dot_vectors() const { return normals; }
+    const NormalPlanes& dot_vectors() const { return normals; }
     void row_weights(int px, int py, int qy, Span xs, float* w) const
     {
         const Id* id = ids.from(xs.begin, qy);
-        const UnitNormal* n = normals.from(xs.begin, qy);
+        const NormalRow n = normals.from(xs.begin, qy);
         const Id center = ids.at(px, py);
-        const UnitNormal& center_normal = normals.at(px, py);
+        const UnitNormal center_normal = normals.at(px, py);
         for (int i = 0; i < xs.size(); ++i) {  // branch-free: the compiler vectorises it
-            const float weight = normal_weight(center_normal, n[i]);
+            const float weight = normal_weight(center_normal, n[size_t(i)]);
             w[i]               = id[i] == center ? weight : 0.0f;
         }
     }
     void offset_weights(int y, Span xs, int dx, int qy, float* w) const
     {
-        const Id* center              = ids.from(xs.begin, y);
-        const UnitNormal* center_normal = normals.from(xs.begin, y);
-        const Id* id                  = ids.from(xs.begin + dx, qy);
-        const UnitNormal* n           = normals.from(xs.begin + dx, qy);
+        const Id* center               = ids.from(xs.begin, y);
+        const NormalRow center_normals = normals.from(xs.begin, y);
+        const Id* id                   = ids.from(xs.begin + dx, qy);
+        const NormalRow n              = normals.from(xs.begin + dx, qy);
         for (int i = 0; i < xs.size(); ++i) {
-            const float weight = normal_weight(center_normal[i], n[i]);
+            const float weight = normal_weight(center_normals[size_t(i)], n[size_t(i)]);
             w[i]               = id[i] == center[i] ? weight : 0.0f;
         }
     }
@@ -99,15 +99,15 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
                    int size, ROI roi, int nthreads)
 {
     IdPlane ids;
-    GuidePlane<UnitNormal> normals;
+    NormalPlanes normals;
     if (!check_window_op(op, dst, beauty, size, roi)
         || !load_window_ids(op, dst, beauty, object_id, roi, size, nthreads, ids)
         || !check_guide(op, "normal", dst, normal, 3, roi)
         || !load_normals(op, dst, normal, ids.region, nthreads, normals))
         return false;
     const Id* id = ids.values.data();
-    const UnitNormal* n = normals.values.data();
-    const float smooth  = smooth_step_cosine(size / 2);
+    const NormalRow n  = normals.from(ids.region.xbegin, ids.region.ybegin);
+    const float smooth = smooth_step_cosine(size / 2);
     const SameObjectWeightedByNormal rule {
         ids, normals,
         uniform_map(key_changes(ids.region, nthreads,
