@@ -37,16 +37,19 @@ float normal_weight(const UnitNormal& a, const UnitNormal& b)
     return same_normal(a, b) ? 1.0f : positive;
 }
 
+// The smallest window radius with smooth windows: the dot-weighted sums
+// cost O(r) per pixel against the exact weights' O(r^2), the same at
+// radius 1 (measured in docs/benchmark_history.md).
+constexpr int smooth_radius_min = 2;
+
 // The cosine of the largest angle between neighbouring normals that keeps
 // every normal of a window of radius r within 80 degrees of the center's:
 // any pixel of the window is at most 2r steps from the center, and angles
-// add up at most along the steps. 1 (no smooth windows) below radius 2:
-// the dot-weighted sums cost O(r) per pixel against the exact weights'
-// O(r^2), the same at radius 1 (measured in docs/benchmark_history.md).
+// add up at most along the steps.
 float smooth_step_cosine(int r)
 {
     constexpr double window_spread_degrees = 80.0, degrees = 3.14159265358979323846 / 180.0;
-    return r >= 2 ? float(std::cos(window_spread_degrees / (2 * r) * degrees)) : 1.0f;
+    return float(std::cos(window_spread_degrees / (2 * r) * degrees));
 }
 
 // Normal rule: q viable iff it shares the object id; weight by normals. A
@@ -94,6 +97,30 @@ struct SameObjectWeightedByNormal {
     }
 };
 
+// Where the normal rule's keys change between neighbours, over the ids'
+// region (the normals' too), for windows of radius r: bit 0 when the id or
+// the normal differs, bit 1 when the id differs or the normals turn by at
+// least the angle of smooth_step_cosine (below smooth_radius_min, as bit 0:
+// no window is then smooth without being uniform).
+KeyChanges normal_key_changes(const IdPlane& ids, const NormalPlanes& normals, int r,
+                              int nthreads)
+{
+    const Id* id      = ids.values.data();
+    const NormalRow n = normals.from(ids.region.xbegin, ids.region.ybegin);
+    if (r < smooth_radius_min)
+        return key_changes(ids.region, nthreads, [id, n](size_t i, size_t j) {
+            const bool differ = (id[i] != id[j]) | !same_normal(n[i], n[j]);
+            return uint8_t(differ | differ << 1);
+        });
+    const float smooth = smooth_step_cosine(r);
+    return key_changes(ids.region, nthreads, [id, n, smooth](size_t i, size_t j) {
+        const bool other = id[i] != id[j];
+        const bool turns = !same_normal(n[i], n[j]);
+        const bool steep = !(dot(n[i], n[j]) > smooth);
+        return uint8_t((other | turns) | (other | steep) << 1);
+    });
+}
+
 bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
                    const ImageBuf& beauty, const ImageBuf& object_id, const ImageBuf& normal,
                    int size, ROI roi, int nthreads)
@@ -105,19 +132,9 @@ bool normal_filter(const char* op, Reduction reduction, ImageBuf& dst,
         || !check_guide(op, "normal", dst, normal, 3, roi)
         || !load_normals(op, dst, normal, ids.region, nthreads, normals))
         return false;
-    const Id* id = ids.values.data();
-    const NormalRow n  = normals.from(ids.region.xbegin, ids.region.ybegin);
-    const float smooth = smooth_step_cosine(size / 2);
     const SameObjectWeightedByNormal rule {
-        ids, normals,
-        uniform_map(key_changes(ids.region, nthreads,
-                                [id, n, smooth](size_t i, size_t j) {
-                                    const bool other = id[i] != id[j];
-                                    const bool turns = !same_normal(n[i], n[j]);
-                                    const bool steep = !(dot(n[i], n[j]) > smooth);
-                                    return uint8_t((other | turns) | (other | steep) << 1);
-                                }),
-                    roi, size / 2, nthreads)
+        ids, normals, uniform_map(normal_key_changes(ids, normals, size / 2, nthreads), roi,
+                                  size / 2, nthreads)
     };
     return run_window_filter(op, reduction, dst, beauty, { &beauty, &object_id, &normal },
                              size, rule, roi, nthreads);
