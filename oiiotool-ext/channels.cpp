@@ -19,8 +19,9 @@ namespace {
 
 /// Bare channel names that belong to the beauty pass, not a pass of their own.
 const std::vector<std::string> bare_beauty = { "R", "G", "B", "A", "Y" };
-/// Pass names that hold the beauty, preferred first (after bare R,G,B).
-const std::vector<std::string> beauty_passes = { "Combined", "rgba", "beauty", "color" };
+/// Pass names that hold the beauty, preferred first (after bare R,G,B):
+/// Cycles' Combined, then RenderMan's Ci (written bare R,G,B with "asrgba").
+const std::vector<std::string> beauty_passes = { "Combined", "Ci", "rgba", "beauty", "color" };
 /// The alpha component, kept out of the default beauty (it passes through).
 const std::string alpha = "A";
 
@@ -72,7 +73,8 @@ std::vector<int> without_alpha(const ImageSpec& spec, const std::vector<int>& in
     return kept.empty() ? indices : kept;
 }
 
-/// The default beauty: bare R,G,B (or Y), else the first Combined-like pass.
+/// The default beauty: bare R,G,B (or Y), else the first Combined-like pass
+/// (`beauty_passes`).
 std::vector<int> find_beauty(const ImageSpec& spec)
 {
     std::vector<int> bare = pass_channels(spec, "", "");

@@ -8,8 +8,9 @@ namespace mcdtool {
 const std::vector<RoleInfo>& role_table()
 {
     // Pass names: testrender's first, then Blender Cycles' (DESIGN.md and
-    // RENDERS.md); matching ignores case and looks only in the beauty's
-    // view layer.
+    // RENDERS.md), then those of RenderMan's denoise AOVs (zfiltered; mse,
+    // the variance of the pixel's mean); matching ignores case and looks
+    // only in the beauty's view layer.
     static const std::vector<RoleInfo> table = {
         { Role::id, "id", "object_id", 1, 1, false, "object id of the first hit",
           { "id", "IndexOB", "object_id", "objectid" } },
@@ -20,11 +21,11 @@ const std::vector<RoleInfo>& role_table()
           { "N", "Normal", "Denoising Normal" } },
         { Role::depth, "depth", "depth", 1, 1, false,
           "first-hit distance (>= 1e9, e.g. Cycles' 1e10, is background)",
-          { "Z", "Depth", "Denoising Depth" } },
+          { "Z", "Depth", "Denoising Depth", "zfiltered" } },
         { Role::albedo, "albedo", "albedo", 1, 3, false,
           "first non-specular hit's reflectance", { "albedo", "Denoising Albedo" } },
         { Role::variance, "variance", "variance", 1, 3, false,
-          "variance of the pixel estimate", { "var", "variance" } },
+          "variance of the pixel estimate", { "var", "variance", "mse" } },
         { Role::half_a, "half_a", "half_a", 0, 0, true,
           "half-sample estimate of the beauty (first half)", { "A", "half_a" } },
         { Role::half_b, "half_b", "half_b", 0, 0, true,

@@ -326,6 +326,37 @@ def test_cycles_guided_filters(cycles_exr, tmp_path):
         assert np.isfinite(out).all()
 
 
+def test_renderman_denoise_aovs(tmp_path):
+    """RenderMan's denoise AOVs (Ci, a, mse, albedo, normal, zfiltered) take
+    the roles of testrender's names: the same data under either set of
+    names gives the same file."""
+    beauty, ids, normal, depth = noisy_scene()
+    rng = np.random.default_rng(3)
+    variance = rng.uniform(0.01, 0.05, beauty.shape).astype(np.float32)
+    albedo = np.full_like(beauty, 0.5)
+    alpha = np.ones(ids.shape + (1,), np.float32)
+    pixels = np.concatenate([beauty, alpha, variance, albedo, normal, depth[..., None]], axis=2)
+    renderman = write_image(tmp_path / "prman.exr", pixels,
+                            ["Ci.r", "Ci.g", "Ci.b", "a", "mse.r", "mse.g", "mse.b", "albedo.r",
+                             "albedo.g", "albedo.b", "normal.x", "normal.y", "normal.z", "zfiltered"],
+                            fmt="float")
+    testrender = write_image(tmp_path / "tr.exr", pixels,
+                             ["R", "G", "B", "A", "var.R", "var.G", "var.B", "albedo.R", "albedo.G",
+                              "albedo.B", "N.X", "N.Y", "N.Z", "Z"], fmt="float")
+    r = run(renderman, "-v", "--denoise", "-o", tmp_path / "prman_out.exr")
+    assert r.code == 0, r
+    for role, channels in [("beauty", "Ci.r,Ci.g,Ci.b"), ("variance", "mse.r,mse.g,mse.b"),
+                           ("albedo", "albedo.r,albedo.g,albedo.b"), ("normal", "normal.x,normal.y,normal.z"),
+                           ("depth", "zfiltered")]:
+        assert f"{role:<8} <- {renderman}: {channels}\n" in r.out, r
+    assert run(testrender, "--denoise", "-o", tmp_path / "tr_out.exr").code == 0
+    out, spec = read_image(tmp_path / "prman_out.exr")
+    expected, expected_spec = read_image(tmp_path / "tr_out.exr")
+    np.testing.assert_array_equal(beauty_of(out, spec, ["Ci.r", "Ci.g", "Ci.b"]),
+                                  beauty_of(expected, expected_spec))
+    np.testing.assert_array_equal(channel(out, spec, "a"), alpha[..., 0])
+
+
 def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
     r = run(cycles_exr, "--beauty", "My Layer.Combined", "--aov", f"normal={cycles_exr}:My Layer.Denoising Normal",
             "-v", "--median", 3, "-o", tmp_path / "out.exr")
