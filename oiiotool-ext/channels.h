@@ -1,9 +1,9 @@
 // channels.h: finding the beauty and the guides among an image's channels:
 // testrender's names (R,G,B, albedo.R, N.X, Z, id, reflid, var.R, A.R, B.R),
 // Blender Cycles multilayer EXR (<ViewLayer>.Combined.R, .IndexOB.X,
-// .Normal.X, .Depth.Z, .Denoising Albedo.R, ...), RenderMan's denoise AOVs
-// (Ci, mse, albedo, normal, zfiltered) and explicit selectors (a comma list
-// of channel names or a layer prefix).
+// .Normal.X, .Depth.Z, .Denoising Albedo.R, ...), RenderMan's and Arnold's
+// denoise AOVs (Ci, mse, zfiltered; RGBA, variance, denoise_albedo, N, Z)
+// and explicit selectors (a comma list of channel names or a layer prefix).
 #pragma once
 
 #include "roles.h"

@@ -182,8 +182,8 @@ std::string help_markdown()
     }
 
     md += "\n## Guide roles\n\nFound automatically beside the beauty (testrender names, Blender Cycles "
-          "multilayer `<ViewLayer>.<Pass>.<Channel>` names, any view-layer name, RenderMan's denoise "
-          "AOVs) or given with "
+          "multilayer `<ViewLayer>.<Pass>.<Channel>` names, any view-layer name, RenderMan's and "
+          "Arnold's denoise AOVs) or given with "
           "`--aov ROLE=FILE[:CHANNELS]`, where CHANNELS is a comma list or a layer prefix "
           "(`render.exr:N` selects `N.X,N.Y,N.Z`) and, without it, the file's channels are taken in "
           "order. The beauty is bare `R,G,B` (or `Y`), else the first `Combined` (or RenderMan `Ci`) "

@@ -9,8 +9,9 @@ const std::vector<RoleInfo>& role_table()
 {
     // Pass names: testrender's first, then Blender Cycles' (DESIGN.md and
     // RENDERS.md), then those of RenderMan's denoise AOVs (zfiltered; mse,
-    // the variance of the pixel's mean); matching ignores case and looks
-    // only in the beauty's view layer.
+    // the variance of the pixel's mean) and Arnold's (denoise_albedo, and
+    // diffuse_albedo before Arnold 6); matching ignores case and looks only
+    // in the beauty's view layer.
     static const std::vector<RoleInfo> table = {
         { Role::id, "id", "object_id", 1, 1, false, "object id of the first hit",
           { "id", "IndexOB", "object_id", "objectid" } },
@@ -23,7 +24,8 @@ const std::vector<RoleInfo>& role_table()
           "first-hit distance (>= 1e9, e.g. Cycles' 1e10, is background)",
           { "Z", "Depth", "Denoising Depth", "zfiltered" } },
         { Role::albedo, "albedo", "albedo", 1, 3, false,
-          "first non-specular hit's reflectance", { "albedo", "Denoising Albedo" } },
+          "first non-specular hit's reflectance",
+          { "albedo", "Denoising Albedo", "denoise_albedo", "diffuse_albedo" } },
         { Role::variance, "variance", "variance", 1, 3, false,
           "variance of the pixel estimate", { "var", "variance", "mse" } },
         { Role::half_a, "half_a", "half_a", 0, 0, true,

@@ -326,35 +326,41 @@ def test_cycles_guided_filters(cycles_exr, tmp_path):
         assert np.isfinite(out).all()
 
 
-def test_renderman_denoise_aovs(tmp_path):
-    """RenderMan's denoise AOVs (Ci, a, mse, albedo, normal, zfiltered) take
-    the roles of testrender's names: the same data under either set of
-    names gives the same file."""
+# The channel names of each renderer's denoise AOVs, in the order beauty (3),
+# alpha, variance (3), albedo (3), normal (3), depth.
+RENDERER_NAMES = {
+    "renderman": ["Ci.r", "Ci.g", "Ci.b", "a", "mse.r", "mse.g", "mse.b", "albedo.r", "albedo.g",
+                  "albedo.b", "normal.x", "normal.y", "normal.z", "zfiltered"],
+    "arnold": ["R", "G", "B", "A", "variance.R", "variance.G", "variance.B", "denoise_albedo.R",
+               "denoise_albedo.G", "denoise_albedo.B", "N.R", "N.G", "N.B", "Z"],
+}
+
+
+@pytest.mark.parametrize("renderer", sorted(RENDERER_NAMES))
+def test_renderer_denoise_aovs(renderer, tmp_path):
+    """A renderer's denoise AOVs take the roles of testrender's names: the
+    same data under either set of names gives the same file."""
     beauty, ids, normal, depth = noisy_scene()
     rng = np.random.default_rng(3)
     variance = rng.uniform(0.01, 0.05, beauty.shape).astype(np.float32)
     albedo = np.full_like(beauty, 0.5)
     alpha = np.ones(ids.shape + (1,), np.float32)
     pixels = np.concatenate([beauty, alpha, variance, albedo, normal, depth[..., None]], axis=2)
-    renderman = write_image(tmp_path / "prman.exr", pixels,
-                            ["Ci.r", "Ci.g", "Ci.b", "a", "mse.r", "mse.g", "mse.b", "albedo.r",
-                             "albedo.g", "albedo.b", "normal.x", "normal.y", "normal.z", "zfiltered"],
-                            fmt="float")
+    names = RENDERER_NAMES[renderer]
+    render = write_image(tmp_path / f"{renderer}.exr", pixels, names, fmt="float")
     testrender = write_image(tmp_path / "tr.exr", pixels,
                              ["R", "G", "B", "A", "var.R", "var.G", "var.B", "albedo.R", "albedo.G",
                               "albedo.B", "N.X", "N.Y", "N.Z", "Z"], fmt="float")
-    r = run(renderman, "-v", "--denoise", "-o", tmp_path / "prman_out.exr")
+    r = run(render, "-v", "--denoise", "-o", tmp_path / "out.exr")
     assert r.code == 0, r
-    for role, channels in [("beauty", "Ci.r,Ci.g,Ci.b"), ("variance", "mse.r,mse.g,mse.b"),
-                           ("albedo", "albedo.r,albedo.g,albedo.b"), ("normal", "normal.x,normal.y,normal.z"),
-                           ("depth", "zfiltered")]:
-        assert f"{role:<8} <- {renderman}: {channels}\n" in r.out, r
+    for role, channels in [("beauty", names[0:3]), ("variance", names[4:7]), ("albedo", names[7:10]),
+                           ("normal", names[10:13]), ("depth", names[13:])]:
+        assert f"{role:<8} <- {render}: {','.join(channels)}\n" in r.out, r
     assert run(testrender, "--denoise", "-o", tmp_path / "tr_out.exr").code == 0
-    out, spec = read_image(tmp_path / "prman_out.exr")
+    out, spec = read_image(tmp_path / "out.exr")
     expected, expected_spec = read_image(tmp_path / "tr_out.exr")
-    np.testing.assert_array_equal(beauty_of(out, spec, ["Ci.r", "Ci.g", "Ci.b"]),
-                                  beauty_of(expected, expected_spec))
-    np.testing.assert_array_equal(channel(out, spec, "a"), alpha[..., 0])
+    np.testing.assert_array_equal(beauty_of(out, spec, names[0:3]), beauty_of(expected, expected_spec))
+    np.testing.assert_array_equal(channel(out, spec, names[3]), alpha[..., 0])
 
 
 def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
