@@ -2,6 +2,8 @@
 // channel extraction.
 #include "channels.h"
 
+#include "cryptomatte.h"
+
 #include "error.h"
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -187,6 +189,9 @@ Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selec
             }
         }
     }
+    const int hashes = find_cryptomatte_object_ids(spec, found.layer);
+    if (!found.roles.count(Role::id) && hashes >= 0)
+        found.roles[Role::id] = { hashes };
     return found;
 }
 

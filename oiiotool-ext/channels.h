@@ -34,8 +34,9 @@ std::vector<int> select_channels(const ImageSpec& spec, std::string_view selecto
                                  std::string_view file, std::string_view context);
 
 /// Finds the beauty (or takes `beauty_selector` if not empty) and every
-/// guide role in the beauty's view layer. Throws RunError if there is no
-/// beauty.
+/// guide role in the beauty's view layer; with no id pass, a Cryptomatte
+/// object layer's rank-0 ids stand in for it. Throws RunError if there is
+/// no beauty.
 Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selector,
                             std::string_view file);
 

@@ -1,6 +1,7 @@
 // guides.cpp: guide assembly, channel-count and coverage checks.
 #include "guides.h"
 
+#include "cryptomatte.h"
 #include "error.h"
 #include "output.h"
 
@@ -30,6 +31,29 @@ void require_channel_count(const RoleInfo& info, int nchannels, int beauty_chann
                                         : channel_count_text(info);
     throw RunError(format("{} : the {} guide needs {} channel(s), got {} ({}); pick them with :CHANNELS",
                           context, info.name, need, nchannels, channels));
+}
+
+/// True when channels `indices` of `spec` give the `role` guide as
+/// Cryptomatte hashes.
+bool cryptomatte_guide(const ImageSpec& spec, Role role, const std::vector<int>& indices)
+{
+    return role == Role::id && indices.size() == 1 && is_cryptomatte_id_channel(spec, indices[0]);
+}
+
+/// Channels `indices` of `file` as the guide of `role`: Cryptomatte hashes
+/// as whole-number ids, anything else as float.
+ImageBuf guide_image(const ImageBuf& file, Role role, const std::vector<int>& indices)
+{
+    if (cryptomatte_guide(file.spec(), role, indices))
+        return cryptomatte_ids(file, indices[0]);
+    return extract_channels(file, indices);
+}
+
+/// "render.exr: N.X,N.Y,N.Z": where a guide came from, for -v.
+std::string guide_source(const std::string& path, const ImageSpec& spec, Role role, const std::vector<int>& indices)
+{
+    return format("{}: {}{}", path, channel_names(spec, indices),
+                  cryptomatte_guide(spec, role, indices) ? " (Cryptomatte ids)" : "");
 }
 
 /// The guide roles the commands of `steps` need or use when present.
@@ -64,8 +88,8 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
     const std::set<Role> used = roles_used(options.steps);
     for (const auto& [role, indices] : found.roles) {
         if (used.count(role))
-            guides.images[role] = extract_channels(input, indices);
-        guides.sources[role] = format("{}: {}", input_path, channel_names(input.spec(), indices));
+            guides.images[role] = guide_image(input, role, indices);
+        guides.sources[role] = guide_source(input_path, input.spec(), role, indices);
     }
     for (const AovRequest& aov : options.aovs) {
         const RoleInfo& info = role_info(aov.role);
@@ -81,10 +105,10 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
         }
         require_channel_count(info, int(indices.size()), beauty_channels, channel_names(file.spec(), indices),
                               context);
-        ImageBuf guide = extract_channels(file, indices);
+        ImageBuf guide = guide_image(file, aov.role, indices);
         require_coverage(guide, input, context);
         guides.images[aov.role] = std::move(guide);
-        guides.sources[aov.role] = format("{}: {}", path, channel_names(file.spec(), indices));
+        guides.sources[aov.role] = guide_source(path, file.spec(), aov.role, indices);
     }
     return guides;
 }

@@ -131,7 +131,7 @@ TEST(Dof, EachPixelIsTheObjectMeanOfItsOwnSide)
     ASSERT_TRUE(mcdenoise::dof(dst, beauty, ids, depth, levels, focus)) << dst.geterror();
     const ImageBuf map = mcdenoise::dof_focus_map(depth, levels, focus);
 
-    const spec::Image b = spec::from_imagebuf(beauty), id = spec::from_imagebuf(ids);
+    const spec::Image b = spec::from_imagebuf(beauty), id = spec::ids_from_imagebuf(ids);
     const spec::Image sides = spec::from_imagebuf(map);
     auto same = [&](int px, int py, int qx, int qy) {
         return std::nearbyint(id.at(qx, qy, 0)) == std::nearbyint(id.at(px, py, 0));

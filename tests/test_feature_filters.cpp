@@ -92,7 +92,7 @@ struct Scene {
         albedo   = noisy_guide(w, h, albedo_nc, seed + 4, 0.0f, 1.0f, x0, y0);
         variance = noisy_guide(w, h, variance_nc, seed + 5, 0.0f, 0.3f, x0, y0);
         sbeauty   = spec::from_imagebuf(beauty);
-        sids      = spec::from_imagebuf(ids);
+        sids      = spec::ids_from_imagebuf(ids);
         snormals  = spec::from_imagebuf(normals);
         sdepth    = spec::from_imagebuf(depth);
         salbedo   = spec::from_imagebuf(albedo);

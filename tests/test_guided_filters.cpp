@@ -156,7 +156,7 @@ void expect_matches_spec(const GuidedFilter& f, const ImageBuf& beauty, const Gu
     ASSERT_TRUE(f.run(dst, beauty, g, size, roi, nthreads)) << f.name << ": " << dst.geterror();
     if (!roi.defined())
         roi = beauty.roi();
-    const SpecGuides sg { spec::from_imagebuf(g.ids), spec::from_imagebuf(g.reflect),
+    const SpecGuides sg { spec::ids_from_imagebuf(g.ids), spec::ids_from_imagebuf(g.reflect),
                           spec::from_imagebuf(g.normals) };
     const std::vector<double> want = spec::filter(spec::from_imagebuf(beauty), roi, size,
                                                   f.spatial, f.reduce, f.viable(sg),
@@ -226,11 +226,23 @@ TEST_P(GuidedFilters, EachPixelAloneGivesItsBitsInTheWholeImage)
     }
 }
 
-TEST_P(GuidedFilters, IdsStoredAsFloatHalfAndUint32)
+TEST_P(GuidedFilters, IdsStoredAsFloatHalfAndWholeNumbers)
 {
+    // Integer pixel types hold the ids themselves (an Arnold ID pass is
+    // uint32), not values OIIO would scale to [0, 1]: every type gives the
+    // float ids' result.
     const ImageBuf beauty = testimg::random_image(40, 33, 3, 3);
-    for (TypeDesc format : { TypeDesc::FLOAT, TypeDesc::HALF, TypeDesc::UINT32 })
-        expect_matches_spec(GetParam(), beauty, make_guides(40, 33, 4, format), 5);
+    ImageBuf as_float;
+    ASSERT_TRUE(GetParam().run(as_float, beauty, make_guides(40, 33, 4), 5, {}, 0));
+    for (TypeDesc format : { TypeDesc::FLOAT, TypeDesc::HALF, TypeDesc::UINT8, TypeDesc::UINT16,
+                             TypeDesc::UINT32, TypeDesc::INT32 }) {
+        const Guides g = make_guides(40, 33, 4, format);
+        expect_matches_spec(GetParam(), beauty, g, 5);
+        ImageBuf dst;
+        ASSERT_TRUE(GetParam().run(dst, beauty, g, 5, {}, 0)) << dst.geterror();
+        EXPECT_EQ(testimg::pixels(dst, dst.roi()), testimg::pixels(as_float, as_float.roi()))
+            << GetParam().name << " with ids stored as " << format;
+    }
 }
 
 TEST_P(GuidedFilters, IdsRoundAsSpecSaysAcrossTheirRange)

@@ -42,12 +42,48 @@ bool check_guide(const char* op, const char* name, ImageBuf& dst, const ImageBuf
 
 namespace {
 
+// Copies the `n` values of type T at `in` to `out` as double.
+template<class T>
+void widen(const unsigned char* in, size_t n, double* out)
+{
+    const T* v = reinterpret_cast<const T*>(in);
+    std::copy(v, v + n, out);
+}
+
+// The values of `img` over `part` as double, integer pixel types as the
+// whole numbers they store (OIIO's conversion would scale them to [0, 1]);
+// `stored` is working memory.
+bool get_stored_values(const ImageBuf& img, const ROI& part, double* out,
+                       std::vector<unsigned char>& stored)
+{
+    using OIIO::TypeDesc;
+    const TypeDesc t = img.spec().format;
+    if (t.basetype == TypeDesc::HALF || t.is_floating_point())
+        return img.get_pixels(part, TypeDesc::DOUBLE, out);
+    const size_t n = size_t(part.npixels()) * part.nchannels();
+    stored.resize(n * t.size());
+    if (!img.get_pixels(part, t, stored.data()))
+        return false;
+    switch (t.basetype) {
+    case TypeDesc::UINT8: widen<uint8_t>(stored.data(), n, out); return true;
+    case TypeDesc::INT8: widen<int8_t>(stored.data(), n, out); return true;
+    case TypeDesc::UINT16: widen<uint16_t>(stored.data(), n, out); return true;
+    case TypeDesc::INT16: widen<int16_t>(stored.data(), n, out); return true;
+    case TypeDesc::UINT32: widen<uint32_t>(stored.data(), n, out); return true;
+    case TypeDesc::INT32: widen<int32_t>(stored.data(), n, out); return true;
+    case TypeDesc::UINT64: widen<uint64_t>(stored.data(), n, out); return true;
+    case TypeDesc::INT64: widen<int64_t>(stored.data(), n, out); return true;
+    default: return img.get_pixels(part, TypeDesc::DOUBLE, out);
+    }
+}
+
 // Reads `guide` over `region` as `Raw` values and maps them row piece by row
 // piece through `convert(raw, nc, n, inside, first)` (n pixels of nc values,
 // for the pixels [first, first + n) of `region` in row-major order;
 // `inside`: within the guide's data window), strip by strip on `nthreads`
 // threads, a few rows at a time so the raw values stay in cache. Float
-// values are read in place where the guide holds them.
+// values are read in place where the guide holds them; double values are
+// the stored ones (`get_stored_values`).
 template<class Raw, class Convert>
 bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
                int nthreads, Convert&& convert)
@@ -62,6 +98,7 @@ bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& 
     OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
         const int chunk = std::max(1, int(chunk_values / (size_t(strip.width()) * nc)));
         std::vector<double> wide;
+        std::vector<unsigned char> stored;
         PixelBlock block;
         for (int y0 = strip.ybegin; y0 < strip.yend && ok; y0 += chunk) {
             ROI part  = strip;
@@ -75,7 +112,7 @@ bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& 
                 row_stride = block.row_stride;
             } else {
                 wide.resize(size_t(part.npixels()) * nc);
-                ok = ok && guide.get_pixels(part, OIIO::TypeDesc::DOUBLE, wide.data());
+                ok = ok && get_stored_values(guide, part, wide.data(), stored);
                 in = wide.data();
             }
             if (!ok)
@@ -119,18 +156,15 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
 }
 
 // Reads `ids` over `region` through `convert` (load_plane's row form) into
-// `plane`, as float where the guide's pixel type holds only values a float
-// represents exactly (half, float, 8 and 16 bit integers), else as double.
+// `plane`: half and float ids as float, the others as double (integer pixel
+// types as the whole numbers they store, not scaled to [0, 1]).
 template<class T, class Convert>
 bool load_raw_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
                   int nthreads, GuidePlane<T>& plane, Convert&& convert)
 {
     using OIIO::TypeDesc;
     const TypeDesc::BASETYPE t = TypeDesc::BASETYPE(ids.spec().format.basetype);
-    const bool exact_in_float = t == TypeDesc::HALF || t == TypeDesc::FLOAT
-                                || t == TypeDesc::UINT8 || t == TypeDesc::INT8
-                                || t == TypeDesc::UINT16 || t == TypeDesc::INT16;
-    if (exact_in_float)
+    if (t == TypeDesc::HALF || t == TypeDesc::FLOAT)
         return load_plane<T, float>(op, dst, ids, region, nthreads, plane, convert);
     return load_plane<T, double>(op, dst, ids, region, nthreads, plane, convert);
 }

@@ -39,8 +39,10 @@ struct GuidePlane {
 /// lanes and a 1080p plane takes 8 MB.
 using Id = int32_t;
 
-/// Ids, rounded to the nearest whole number. Ids beyond 32 bits are
-/// renumbered densely in their order, which keeps equality and sign.
+/// Ids, rounded to the nearest whole number; an integer pixel type gives
+/// the whole numbers it stores (not OIIO's values scaled to [0, 1]). Ids
+/// beyond 32 bits are renumbered densely in their order, which keeps
+/// equality and sign.
 using IdPlane = GuidePlane<Id>;
 
 /// The id given to pixels outside a guide's data window: equal to no id.

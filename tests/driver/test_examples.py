@@ -363,6 +363,52 @@ def test_renderer_denoise_aovs(renderer, tmp_path):
     np.testing.assert_array_equal(channel(out, spec, names[3]), alpha[..., 0])
 
 
+# Cryptomatte hashes (float bits): two of them round to the same whole
+# number as float ids (and as the background's 0), so only ids taken from
+# the bits keep the four objects apart.
+CRYPTO_HASHES = np.array([0, 0x0A3F1234, 0x0A3F1235, 0xC2F0AAAA], np.uint32)
+CRYPTO_LAYOUTS = {
+    "arnold": ("", "crypto_object", {"cryptomatte/d593dd7/name": "crypto_object",
+                                     "cryptomatte/d593dd7/hash": "MurmurHash3_32",
+                                     "cryptomatte/d593dd7/conversion": "uint32_to_float32"}),
+    "cycles without metadata": ("ViewLayer.", "ViewLayer.CryptoObject", {}),
+}
+
+
+@pytest.mark.parametrize("layout", sorted(CRYPTO_LAYOUTS))
+def test_cryptomatte_object_ids(layout, tmp_path):
+    """With no id pass, a Cryptomatte object layer's rank-0 ids (its hashes'
+    bits) drive the object filters exactly as whole-number ids would."""
+    prefix, layer, attrs = CRYPTO_LAYOUTS[layout]
+    beauty, _, _, _ = noisy_scene()
+    h, w, _ = beauty.shape
+    objects = np.minimum(np.arange(w) * 4 // w, 3)[None, :].repeat(h, axis=0)
+    beauty = beauty + (objects[..., None] * 0.3).astype(np.float32)
+    hashes = CRYPTO_HASHES[objects].view(np.float32)
+    coverage = np.ones_like(hashes)
+    zero = np.zeros_like(hashes)
+    pixels = np.concatenate([beauty, np.stack([hashes, coverage, zero, zero], axis=2)], axis=2)
+    beauty_names = [f"{prefix}Combined.{c}" if prefix else c for c in "RGB"]
+    names = beauty_names + [f"{layer}00.{c}" for c in "RGBA"]
+    render = write_image(tmp_path / "render.exr", pixels, names, fmt="float", attrs=attrs)
+    whole = write_image(tmp_path / "whole.exr", objects[..., None].astype(np.float32), ["Y"], fmt="float")
+    raw = write_image(tmp_path / "raw.exr", hashes[..., None], ["Y"], fmt="float")
+
+    r = run(render, "-v", "--object-median", 5, "-o", tmp_path / "crypto.exr")
+    assert r.code == 0, r
+    assert f"id       <- {render}: {layer}00.R (Cryptomatte ids)\n" in r.out, r
+    for ids, out in ((whole, "whole.out.exr"), (raw, "raw.out.exr")):
+        assert run(render, "--aov", f"id={ids}", "--object-median", 5, "-o", tmp_path / out).code == 0
+    crypto, spec = read_image(tmp_path / "crypto.exr")
+    expected, _ = read_image(tmp_path / "whole.out.exr")
+    rounded, _ = read_image(tmp_path / "raw.out.exr")
+    np.testing.assert_array_equal(beauty_of(crypto, spec, beauty_names), beauty_of(expected, spec, beauty_names))
+    assert not np.array_equal(beauty_of(rounded, spec, beauty_names), beauty_of(expected, spec, beauty_names))
+    r = run(render, "-v", "--aov", f"id={render}:{layer}00.R", "--object-median", 5, "-o", tmp_path / "aov.exr")
+    assert r.code == 0 and "(Cryptomatte ids)" in r.out, r
+    np.testing.assert_array_equal(read_image(tmp_path / "aov.exr")[0], crypto)
+
+
 def test_beauty_override_and_layer_prefix(cycles_exr, tmp_path):
     r = run(cycles_exr, "--beauty", "My Layer.Combined", "--aov", f"normal={cycles_exr}:My Layer.Denoising Normal",
             "-v", "--median", 3, "-o", tmp_path / "out.exr")

@@ -21,6 +21,32 @@ Image from_imagebuf(const OIIO::ImageBuf& img)
     return out;
 }
 
+namespace {
+
+// The whole numbers of type T stored in `img`'s data window, into `out`.
+template<class T>
+void stored_whole_numbers(const OIIO::ImageBuf& img, Image& out)
+{
+    std::vector<T> stored(out.values.size());
+    img.get_pixels(img.roi(), img.spec().format, stored.data());
+    std::copy(stored.begin(), stored.end(), out.values.begin());
+}
+
+}  // namespace
+
+Image ids_from_imagebuf(const OIIO::ImageBuf& img)
+{
+    Image out = from_imagebuf(img);
+    switch (img.spec().format.basetype) {
+    case OIIO::TypeDesc::UINT8: stored_whole_numbers<uint8_t>(img, out); break;
+    case OIIO::TypeDesc::UINT16: stored_whole_numbers<uint16_t>(img, out); break;
+    case OIIO::TypeDesc::UINT32: stored_whole_numbers<uint32_t>(img, out); break;
+    case OIIO::TypeDesc::INT32: stored_whole_numbers<int32_t>(img, out); break;
+    default: break;
+    }
+    return out;
+}
+
 bool all_viable(int, int, int, int) { return true; }
 double unit_weight(int, int, int, int) { return 1.0; }
 

@@ -28,6 +28,11 @@ struct Image {
 /// Every pixel of `img`'s data window, converted to double.
 Image from_imagebuf(const OIIO::ImageBuf& img);
 
+/// `from_imagebuf` for ids: the integer formats uint8, uint16, uint32 and
+/// int32 give the whole numbers they store (OIIO's conversion would scale
+/// them to [0, 1]); ids are whole numbers (SPEC.md).
+Image ids_from_imagebuf(const OIIO::ImageBuf& img);
+
 /// How a window's viable values become one value.
 enum class Reduce { weighted_mean, median };
 

@@ -12,6 +12,21 @@ namespace testimg {
 using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 
+namespace {
+
+// Stores `values` in `img` as the nearest whole numbers of type T (OIIO's
+// conversion from float would scale them by T's maximum).
+template<class T>
+void set_whole_numbers(ImageBuf& img, const std::vector<float>& values)
+{
+    std::vector<T> whole(values.size());
+    for (size_t i = 0; i < values.size(); ++i)
+        whole[i] = T(std::lround(values[i]));
+    img.set_pixels(img.roi(), img.spec().format, whole.data());
+}
+
+}  // namespace
+
 ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format, int x0,
                      int y0, const std::vector<float>& values)
 {
@@ -19,7 +34,13 @@ ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format
     spec.x = x0;
     spec.y = y0;
     ImageBuf img(spec);
-    img.set_pixels(img.roi(), OIIO::TypeDesc::FLOAT, values.data());
+    switch (format.basetype) {
+    case OIIO::TypeDesc::UINT8: set_whole_numbers<uint8_t>(img, values); break;
+    case OIIO::TypeDesc::UINT16: set_whole_numbers<uint16_t>(img, values); break;
+    case OIIO::TypeDesc::UINT32: set_whole_numbers<uint32_t>(img, values); break;
+    case OIIO::TypeDesc::INT32: set_whole_numbers<int32_t>(img, values); break;
+    default: img.set_pixels(img.roi(), OIIO::TypeDesc::FLOAT, values.data());
+    }
     return img;
 }
 

@@ -13,7 +13,8 @@
 namespace testimg {
 
 /// An image of `width` x `height` pixels of `nchannels` channels stored as
-/// `format`, origin (x0, y0), from row-major float `values`.
+/// `format`, origin (x0, y0), from row-major float `values` (as the nearest
+/// whole numbers for the integer formats uint8, uint16, uint32 and int32).
 OIIO::ImageBuf from_values(int width, int height, int nchannels, OIIO::TypeDesc format,
                            int x0, int y0, const std::vector<float>& values);
 

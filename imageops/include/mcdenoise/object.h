@@ -8,9 +8,10 @@ namespace mcdenoise {
 
 /// Object mean: the mean of the finite values of the neighbours that share
 /// the center's object id (one channel, compared as integers after
-/// rounding; NaN counts as -1). Averaging only within an object keeps hard
-/// edges along object boundaries (the report's first improvement over the
-/// simple mean). `object_id` must cover the ROI.
+/// rounding; NaN counts as -1; integer pixel types give the whole numbers
+/// they store, not OIIO's [0, 1] scaling). Averaging only within an object
+/// keeps hard edges along object boundaries (the report's first
+/// improvement over the simple mean). `object_id` must cover the ROI.
 ImageBuf object_mean(const ImageBuf& beauty, const ImageBuf& object_id, int size = 3,
                      ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
