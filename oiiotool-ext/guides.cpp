@@ -41,11 +41,14 @@ bool cryptomatte_guide(const ImageSpec& spec, Role role, const std::vector<int>&
 }
 
 /// Channels `indices` of `file` as the guide of `role`: Cryptomatte hashes
-/// as whole-number ids, anything else as float.
+/// and ids stored as integers as whole-number ids, anything else as float.
 ImageBuf guide_image(const ImageBuf& file, Role role, const std::vector<int>& indices)
 {
     if (cryptomatte_guide(file.spec(), role, indices))
         return cryptomatte_ids(file, indices[0]);
+    const bool ids = role == Role::id || role == Role::reflid;
+    if (ids && indices.size() == 1 && stored_as_integers(file, indices[0]))
+        return read_stored_channel(file, indices[0]);
     return extract_channels(file, indices);
 }
 

@@ -188,7 +188,11 @@ std::string help_markdown()
           "(`render.exr:N` selects `N.X,N.Y,N.Z`) and, without it, the file's channels are taken in "
           "order. The beauty is bare `R,G,B` (or `Y`), else the first `Combined` (or RenderMan `Ci`) "
           "pass, without alpha "
-          "(alpha passes through); `--beauty CHANNELS` overrides it. `-v` prints the channels used for "
+          "(alpha passes through); `--beauty CHANNELS` overrides it. With no id pass, a Cryptomatte "
+          "object layer's rank-0 ids (`CryptoObject00.R`, `crypto_object00.R`, or a layer whose "
+          "`cryptomatte/<key>/name` metadata ends in `object`) stand in for `id`, each hash taken as "
+          "the 32-bit number it codes (`--aov id=FILE:<layer>00.R` does the same); ids stored as "
+          "integers (Arnold's uint `ID`) are the numbers stored. `-v` prints the channels used for "
           "each role.\n\n| role | C++ / Python argument | channels | what it is | found as |\n"
           "|---|---|---|---|---|\n";
     for (const RoleInfo& info : role_table())

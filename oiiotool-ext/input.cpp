@@ -49,6 +49,29 @@ ImageBuf read_image(const std::string& path, std::string_view context, uint64_t 
     return image;
 }
 
+bool stored_as_integers(const ImageBuf& image, int c)
+{
+    const OIIO::TypeDesc type = image.nativespec().channelformat(c);
+    return type.basetype >= OIIO::TypeDesc::UINT8 && type.basetype <= OIIO::TypeDesc::INT64;
+}
+
+ImageBuf read_stored_channel(const ImageBuf& image, int c)
+{
+    const std::string path = image.name();
+    const OIIO::TypeDesc type = image.nativespec().channelformat(c);
+    OIIO::ImageSpec spec = image.spec();
+    spec.set_format(type);
+    spec.nchannels = 1;
+    spec.channelnames = { image.spec().channel_name(c) };
+    spec.alpha_channel = spec.z_channel = -1;
+    ImageBuf stored(spec, OIIO::InitializePixels::No);
+    auto in = OIIO::ImageInput::open(path);
+    if (!in || !in->read_image(0, 0, c, c + 1, type, stored.localpixels()))
+        throw RunError(format("cannot read channel {} of '{}': {}", spec.channelnames[0], path,
+                              one_line(in ? in->geterror() : OIIO::geterror())));
+    return stored;
+}
+
 const ImageBuf& ImageFiles::get(const std::string& path, std::string_view context)
 {
     auto found = images_.find(path);

@@ -22,6 +22,16 @@ using OIIO::ImageBuf;
 /// would exceed `memory_limit` bytes (memory_limit.h).
 ImageBuf read_image(const std::string& path, std::string_view context, uint64_t memory_limit);
 
+/// True if the file `image` was read from stores channel `c` as integers
+/// (which reading as float scaled to [0, 1]).
+bool stored_as_integers(const ImageBuf& image, int c);
+
+/// Channel `c` of the file `image` was read from, read again in the type
+/// the file stores it in (ids in an integer channel, such as Arnold's ID
+/// pass, are the whole numbers stored), with `image`'s windows and
+/// metadata. Throws RunError naming the file.
+ImageBuf read_stored_channel(const ImageBuf& image, int c);
+
 /// The images read for one frame, by path.
 class ImageFiles {
 public:

@@ -363,6 +363,39 @@ def test_renderer_denoise_aovs(renderer, tmp_path):
     np.testing.assert_array_equal(channel(out, spec, names[3]), alpha[..., 0])
 
 
+def test_ids_stored_as_integers(tmp_path):
+    """An id channel stored as uint (Arnold's ID pass) gives the whole
+    numbers it holds, not OIIO's float reading scaled to [0, 1] (where every
+    id would round to 0), and passes through to the output unchanged."""
+    beauty, _, _, _ = noisy_scene()
+    h, w, _ = beauty.shape
+    objects = np.minimum(np.arange(w) * 4 // w, 3)[None, :].repeat(h, axis=0)
+    beauty = beauty + (objects[..., None] * 0.3).astype(np.float32)
+    stored = np.array([7, 8, 1000003, 70000], np.float64)[objects]
+    spec = oiio.ImageSpec(w, h, 4, oiio.FLOAT)
+    spec.channelnames = ("R", "G", "B", "ID")
+    spec.channelformats = (oiio.TypeDesc("float"),) * 3 + (oiio.TypeDesc("uint"),)
+    render = str(tmp_path / "arnold.exr")
+    out = oiio.ImageOutput.create(render)
+    assert out.open(render, spec)
+    # OIIO scales float to uint by 2^32 - 1 on writing: this stores `stored`.
+    assert out.write_image(np.concatenate([beauty, (stored / 4294967295.0)[..., None]], axis=2).astype(np.float32))
+    out.close()
+    whole = write_image(tmp_path / "whole.exr", objects[..., None].astype(np.float32), ["Y"], fmt="float")
+
+    r = run(render, "-v", "--object-median", 5, "-o", tmp_path / "out.exr")
+    assert r.code == 0, r
+    assert f"id       <- {render}: ID\n" in r.out, r
+    assert run(render, "--aov", f"id={whole}", "--object-median", 5, "-o", tmp_path / "expected.exr").code == 0
+    got, got_spec = read_image(tmp_path / "out.exr")
+    expected, _ = read_image(tmp_path / "expected.exr")
+    np.testing.assert_array_equal(beauty_of(got, got_spec), beauty_of(expected, got_spec))
+    written = oiio.ImageInput.open(str(tmp_path / "out.exr"))
+    ids = written.read_image(0, 0, 3, 4, oiio.UINT32)[..., 0]
+    written.close()
+    np.testing.assert_array_equal(ids, stored.astype(np.uint32))
+
+
 # Cryptomatte hashes (float bits): two of them round to the same whole
 # number as float ids (and as the background's 0), so only ids taken from
 # the bits keep the four objects apart.
