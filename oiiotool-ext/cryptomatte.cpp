@@ -18,8 +18,8 @@ namespace Strutil = OIIO::Strutil;
 namespace {
 
 /// The Cryptomatte layer names of `spec`: the values of its
-/// `cryptomatte/<key>/name` attributes, or Cycles' and Arnold's default
-/// object layer names (with any view-layer prefix) when it has none.
+/// `cryptomatte/<key>/name` attributes (none when the metadata was
+/// stripped).
 std::vector<std::string> layer_names(const OIIO::ImageSpec& spec)
 {
     std::vector<std::string> names;
