@@ -154,7 +154,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         }
         std::string path = path_of(step.output);
         OutputImage output = compose_output(input, found.beauty, current, options, path);
-        batch.write(path, output.spec, output.pixels, "-o");
+        batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (options.verbose)
             std::printf("mcdtool: -o %s%s\n", path.c_str(),
                         output.beauty_only ? " (beauty channels only: the format holds at most 4)" : "");

@@ -4,12 +4,15 @@
 
 #include "cleanup.h"
 #include "error.h"
+#include "input.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <unistd.h>
@@ -43,6 +46,38 @@ const float* float_pixels(const ImageBuf& image, std::vector<float>& storage)
     return storage.data();
 }
 
+/// `pixels` (float) in the native layout of `spec` (each channel in its
+/// own pixel type, as OIIO converts it), the channels of `stored` copied
+/// from those images' stored values.
+std::vector<unsigned char> native_pixels(const ImageSpec& spec, const ImageBuf& pixels,
+                                         const std::map<int, ImageBuf>& stored)
+{
+    const size_t n = spec.image_pixels();
+    const size_t pixel_bytes = spec.pixel_bytes(true);
+    std::vector<unsigned char> out(n * pixel_bytes), plane;
+    std::vector<float> values(n);
+    size_t offset = 0;
+    for (int c = 0; c < spec.nchannels; ++c) {
+        const TypeDesc type = spec.channelformat(c);
+        const size_t size = type.size();
+        plane.resize(n * size);
+        const auto from = stored.find(c);
+        if (from != stored.end()) {
+            from->second.get_pixels(from->second.roi(), type, plane.data());
+        } else {
+            OIIO::ROI channel = pixels.roi();
+            channel.chbegin = c;
+            channel.chend = c + 1;
+            pixels.get_pixels(channel, TypeDesc::FLOAT, values.data());
+            OIIO::convert_pixel_values(TypeDesc::FLOAT, values.data(), type, plane.data(), int(n));
+        }
+        for (size_t i = 0; i < n; ++i)
+            std::memcpy(out.data() + i * pixel_bytes + offset, plane.data() + i * size, size);
+        offset += size;
+    }
+    return out;
+}
+
 }  // namespace
 
 OutputBatch::~OutputBatch()
@@ -54,7 +89,7 @@ OutputBatch::~OutputBatch()
 }
 
 void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
-                        const std::string& context)
+                        const std::string& context, const std::map<int, ImageBuf>& stored)
 {
     Timer timer;
     auto fail = [&](const std::string& reason) {
@@ -73,7 +108,10 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
     if (!out->open(temp, file_spec))
         throw fail(out->geterror());
     std::vector<float> storage;
-    if (!out->write_image(TypeDesc::FLOAT, float_pixels(pixels, storage)))
+    const bool native = !stored.empty() && !file_spec.channelformats.empty();
+    const bool written = native ? out->write_image(OIIO::TypeUnknown, native_pixels(file_spec, pixels, stored).data())
+                                : out->write_image(TypeDesc::FLOAT, float_pixels(pixels, storage));
+    if (!written)
         throw fail(out->geterror());
     if (!out->close())
         throw fail(out->geterror());
@@ -150,6 +188,10 @@ OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty
     output.spec = output_spec(input, options);
     if (input.nchannels() <= portable_channels || holds_any_channels(path)) {
         output.pixels = merge_result(input, beauty, result);
+        for (int c = 0; c < input.nchannels(); ++c)
+            if (!output.spec.channelformats.empty() && output.spec.channelformat(c).size() >= 4
+                && stored_as_integers(input, c) && std::find(beauty.begin(), beauty.end(), c) == beauty.end())
+                output.stored[c] = read_stored_channel(input, c);
         return output;
     }
     output.beauty_only = true;

@@ -12,6 +12,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,10 +31,12 @@ public:
     ~OutputBatch();
 
     /// Writes `pixels` (float, `spec.nchannels` channels covering the data
-    /// window of `spec`) to a temp file beside `path`. Throws RunError
+    /// window of `spec`) to a temp file beside `path`, the channels of
+    /// `stored` from its images instead (in their own pixel type, when the
+    /// format keeps per-channel types). Throws RunError
     /// "<context> : cannot write '<path>': <reason>".
     void write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
-               const std::string& context);
+               const std::string& context, const std::map<int, ImageBuf>& stored = {});
     /// Renames every temp file into place. Throws RunError on failure.
     void commit();
 
@@ -51,14 +54,18 @@ private:
 struct OutputImage {
     ImageSpec spec;
     ImageBuf pixels;
+    /// Channels written from their stored values instead: integers of 32
+    /// bits (an Arnold ID pass), which float pixels cannot carry exactly.
+    std::map<int, ImageBuf> stored;
     bool beauty_only = false;  ///< the format could not hold every channel
 };
 
 /// The output for `path`: the input with channels `beauty` replaced by the
 /// channels of `result` (same data window), in the spec of the input file
 /// (channels, per-channel pixel types, metadata, compression, data and
-/// display windows) with -d and --compression applied. A format that holds
-/// at most four channels (PNG, JPEG) gets the beauty channels only.
+/// display windows) with -d and --compression applied; channels the input
+/// stores as 32-bit integers pass through exactly. A format that holds at
+/// most four channels (PNG, JPEG) gets the beauty channels only.
 OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
                            const Options& options, const std::string& path);
 

@@ -366,20 +366,23 @@ def test_renderer_denoise_aovs(renderer, tmp_path):
 def test_ids_stored_as_integers(tmp_path):
     """An id channel stored as uint (Arnold's ID pass) gives the whole
     numbers it holds, not OIIO's float reading scaled to [0, 1] (where every
-    id would round to 0), and passes through to the output unchanged."""
+    id would round to 0), and passes through to the output unchanged, ids
+    beyond float's 24 bits too."""
     beauty, _, _, _ = noisy_scene()
     h, w, _ = beauty.shape
     objects = np.minimum(np.arange(w) * 4 // w, 3)[None, :].repeat(h, axis=0)
     beauty = beauty + (objects[..., None] * 0.3).astype(np.float32)
-    stored = np.array([7, 8, 1000003, 70000], np.float64)[objects]
-    spec = oiio.ImageSpec(w, h, 4, oiio.FLOAT)
+    stored = np.array([7, 123456789, 4000000001, 70000], np.float64)[objects]  # beyond float's 24 bits
+    spec = oiio.ImageSpec(w, h, 4, oiio.UINT32)
     spec.channelnames = ("R", "G", "B", "ID")
     spec.channelformats = (oiio.TypeDesc("float"),) * 3 + (oiio.TypeDesc("uint"),)
     render = str(tmp_path / "arnold.exr")
     out = oiio.ImageOutput.create(render)
     assert out.open(render, spec)
-    # OIIO scales float to uint by 2^32 - 1 on writing: this stores `stored`.
-    assert out.write_image(np.concatenate([beauty, (stored / 4294967295.0)[..., None]], axis=2).astype(np.float32))
+    # uint32 data: the ID channel stores it as it is, the float channels as
+    # its value / (2^32 - 1), so the beauty is given in [0, 1] that way.
+    scaled_beauty = np.round(np.clip(beauty / 2, 0, 1) * 4294967295.0)
+    assert out.write_image(np.concatenate([scaled_beauty, stored[..., None]], axis=2).astype(np.uint32))
     out.close()
     whole = write_image(tmp_path / "whole.exr", objects[..., None].astype(np.float32), ["Y"], fmt="float")
 
