@@ -27,31 +27,6 @@ const std::vector<std::string> beauty_passes = { "Combined", "Ci", "rgba", "beau
 /// The alpha component, kept out of the default beauty (it passes through).
 const std::string alpha = "A";
 
-/// A channel name taken apart: "<layer>.<pass>.<component>".
-struct ChannelName {
-    std::string layer;
-    std::string pass;
-    std::string component;
-};
-
-/// Splits a channel name. "R" -> ("", "", "R"); "Z" -> ("", "Z", "Z");
-/// "N.X" -> ("", "N", "X"); "ViewLayer.Denoising Normal.X" ->
-/// ("ViewLayer", "Denoising Normal", "X").
-ChannelName split_name(const std::string& name)
-{
-    size_t dot = name.rfind('.');
-    if (dot == std::string::npos) {
-        bool beauty = std::find(bare_beauty.begin(), bare_beauty.end(), name) != bare_beauty.end();
-        return { "", beauty ? "" : name, name };
-    }
-    std::string rest = name.substr(0, dot);
-    std::string component = name.substr(dot + 1);
-    size_t dot2 = rest.rfind('.');
-    if (dot2 == std::string::npos)
-        return { "", rest, component };
-    return { rest.substr(0, dot2), rest.substr(dot2 + 1), component };
-}
-
 /// Indices of the channels of pass `pass` in view layer `layer` (pass name
 /// compared without case), in file order.
 std::vector<int> pass_channels(const ImageSpec& spec, const std::string& layer, const std::string& pass)
@@ -109,8 +84,23 @@ std::vector<int> matching_components(const ImageSpec& spec, const std::vector<in
     return matched;
 }
 
-/// The spec of channels `indices` of an image of spec `from`, as float:
-/// its windows and metadata, those channels' names, alpha and depth.
+}  // namespace
+
+ChannelName split_name(const std::string& name)
+{
+    size_t dot = name.rfind('.');
+    if (dot == std::string::npos) {
+        bool beauty = std::find(bare_beauty.begin(), bare_beauty.end(), name) != bare_beauty.end();
+        return { "", beauty ? "" : name, name };
+    }
+    std::string rest = name.substr(0, dot);
+    std::string component = name.substr(dot + 1);
+    size_t dot2 = rest.rfind('.');
+    if (dot2 == std::string::npos)
+        return { "", rest, component };
+    return { rest.substr(0, dot2), rest.substr(dot2 + 1), component };
+}
+
 ImageSpec extracted_spec(const ImageSpec& from, const std::vector<int>& indices)
 {
     ImageSpec spec = from;
@@ -127,8 +117,6 @@ ImageSpec extracted_spec(const ImageSpec& from, const std::vector<int>& indices)
     }
     return spec;
 }
-
-}  // namespace
 
 std::string channel_names(const ImageSpec& spec, const std::vector<int>& indices)
 {

@@ -20,6 +20,22 @@ namespace mcdtool {
 using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 
+/// A channel name taken apart: "<layer>.<pass>.<component>".
+struct ChannelName {
+    std::string layer;
+    std::string pass;
+    std::string component;
+};
+
+/// Splits a channel name. "R" -> ("", "", "R"); "Z" -> ("", "Z", "Z");
+/// "N.X" -> ("", "N", "X"); "ViewLayer.Denoising Normal.X" ->
+/// ("ViewLayer", "Denoising Normal", "X").
+ChannelName split_name(const std::string& name);
+
+/// The spec of channels `indices` of an image of spec `from`, as float:
+/// its windows and metadata, those channels' names, alpha and depth.
+ImageSpec extracted_spec(const ImageSpec& from, const std::vector<int>& indices);
+
 /// What discovery found in one image's channel list.
 struct Discovery {
     std::vector<int> beauty;                 ///< channel indices to filter

@@ -66,15 +66,11 @@ bool is_cryptomatte_id_channel(const OIIO::ImageSpec& spec, int c)
 int find_cryptomatte_object_ids(const OIIO::ImageSpec& spec, const std::string& layer)
 {
     const std::vector<std::string> layers = layer_names(spec);
-    const std::string prefix              = layer.empty() ? "" : layer + ".";
     for (int c = 0; c < spec.nchannels; ++c) {
-        const std::string name = spec.channel_name(c);
-        if (!Strutil::starts_with(name, prefix))
-            continue;
-        const std::string pass = name.substr(prefix.size());  // "<pass>00.R"
-        const bool rank0 = Strutil::ends_with(pass, "00.R") && pass.find('.') == pass.size() - 2;
-        if (rank0 && Strutil::iends_with(pass.substr(0, pass.size() - 4), "object")
-            && is_rank_channel(layers, name, "R"))
+        const ChannelName name = split_name(spec.channel_name(c));  // pass "<name>00"
+        if (name.layer == layer && name.component == "R" && Strutil::ends_with(name.pass, "00")
+            && Strutil::iends_with(name.pass.substr(0, name.pass.size() - 2), "object")
+            && is_rank_channel(layers, spec.channel_name(c), "R"))
             return c;
     }
     return -1;

@@ -1,6 +1,8 @@
 // input.cpp: image reading with errors that name the file.
 #include "input.h"
 
+#include "channels.h"
+
 #include "error.h"
 #include "memory_limit.h"
 
@@ -59,11 +61,8 @@ ImageBuf read_stored_channel(const ImageBuf& image, int c)
 {
     const std::string path = image.name();
     const OIIO::TypeDesc type = image.nativespec().channelformat(c);
-    OIIO::ImageSpec spec = image.spec();
+    OIIO::ImageSpec spec = extracted_spec(image.spec(), { c });
     spec.set_format(type);
-    spec.nchannels = 1;
-    spec.channelnames = { image.spec().channel_name(c) };
-    spec.alpha_channel = spec.z_channel = -1;
     ImageBuf stored(spec, OIIO::InitializePixels::No);
     auto in = OIIO::ImageInput::open(path);
     if (!in || !in->read_image(0, 0, c, c + 1, type, stored.localpixels()))
