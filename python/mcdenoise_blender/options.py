@@ -1,0 +1,49 @@
+"""options.py: the denoise options shared by the Render Properties settings
+and the sequence operator (mode, output), and what they mean as an mcdtool
+command line for one frame file."""
+import os
+
+import bpy
+
+#: mode -> the mcdtool chain it runs.
+CHAINS = {
+    "DENOISE": ["--denoise"],
+    "REPORT_CHAIN": ["--object-median", "7", "--gaussian", "3"],
+}
+
+MODE_ITEMS = (
+    ("DENOISE", "Denoise", "mcdtool --denoise: non-local means guided by the Denoising Data passes"),
+    ("REPORT_CHAIN", "Report's chain", "mcdtool --object-median 7 --gaussian 3, guided by the Object Index pass"),
+)
+
+OUTPUT_ITEMS = (
+    ("IN_PLACE", "In place", "Replace each frame file with its denoised version (written beside it, then renamed)"),
+    ("PATTERN", "Sibling path", "Write the denoised frame to a path made from the frame's own (the raw frame is kept)"),
+)
+
+
+class DenoiseOptions:
+    """Mix-in: the properties both the scene settings and the operator have."""
+    mode: bpy.props.EnumProperty(name="Mode", items=MODE_ITEMS, default="DENOISE")
+    output: bpy.props.EnumProperty(name="Output", items=OUTPUT_ITEMS, default="IN_PLACE")
+    pattern: bpy.props.StringProperty(
+        name="Path", default="{name}_denoised.exr",
+        description="Denoised file, relative to the frame's folder: {name} is the frame file's name without "
+                    "its extension (e.g. denoised/{name}.exr); absolute and // paths are allowed")
+
+
+def output_path(frame_file, output, pattern):
+    """Where the denoised version of `frame_file` goes."""
+    if output == "IN_PLACE":
+        return frame_file
+    name = os.path.splitext(os.path.basename(frame_file))[0]
+    path = bpy.path.abspath(pattern.replace("{name}", name))
+    return os.path.normpath(os.path.join(os.path.dirname(frame_file), path))
+
+
+def command_line(frame_file, mode, output, pattern):
+    """mcdtool's command line (without the program name) for one frame file;
+    in place is mcdtool's --force (a temp file beside it, renamed over it)."""
+    target = output_path(frame_file, output, pattern)
+    args = [frame_file] + CHAINS[mode] + ["-o", target]
+    return args + ["--force"] if output == "IN_PLACE" else args
