@@ -20,7 +20,6 @@ Command line (mcdtool's sequence options, plus where to run):
         [--scheduler tcp://HOST:PORT] [--workers N] [--retries N] [--chunk-size N] [--quiet]
 """
 import concurrent.futures
-import multiprocessing
 import os
 import shlex
 import sys
@@ -216,6 +215,10 @@ def _failed_chunk(chunk, error):
 
 
 def _run_on_pool(workers, args, chunks, retries, summary, report):
+    # Imported here: the Blender add-on imports this module for run_frames,
+    # and importing multiprocessing inside Debian's Blender 3.4 makes Blender
+    # crash when it exits.
+    import multiprocessing
     # forkserver: the pool's processes start clean rather than forking a
     # parent that may hold threads (OpenImageIO's pool, the caller's).
     context = multiprocessing.get_context("forkserver")

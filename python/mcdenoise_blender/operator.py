@@ -12,7 +12,6 @@ class MCDENOISE_OT_denoise_sequence(options.DenoiseOptions, bpy.types.Operator):
     """Denoise existing OpenEXR MultiLayer frames with mcdenoise"""
     bl_idname = "mcdenoise.denoise_sequence"
     bl_label = "Denoise EXR Sequence"
-    bl_options = {"REGISTER"}
 
     directory: bpy.props.StringProperty(subtype="DIR_PATH")
     files: bpy.props.CollectionProperty(type=bpy.types.OperatorFileListElement)
