@@ -24,6 +24,8 @@ def parse_options():
     parser.add_argument("--frames", type=int, default=3, help="frames 1..N")
     parser.add_argument("--format", default="OPEN_EXR_MULTILAYER")
     parser.add_argument("--denoise", action="store_true", help="enable mcdenoise for the render")
+    parser.add_argument("--mode", default="DENOISE", help="the add-on's mode (DENOISE, REPORT_CHAIN)")
+    parser.add_argument("--pattern", help="the add-on writes to this sibling path pattern, not in place")
     parser.add_argument("--raw-dir", help="copy each written frame here before the add-on denoises it")
     parser.add_argument("--operator", nargs="+", metavar="FILE",
                         help="run the sequence operator on these files (output to denoised/{name}.exr)")
@@ -106,7 +108,10 @@ def main():
     if options.raw_dir:
         keep_raw_frames(options.raw_dir)
     if options.denoise:
-        scene.mcdenoise.enabled = True   # also turns Cycles' own denoiser off
+        scene.mcdenoise.mode = options.mode
+        if options.pattern:
+            scene.mcdenoise.output, scene.mcdenoise.pattern = "PATTERN", options.pattern
+        scene.mcdenoise.enabled = True   # also turns Cycles' own denoiser off and the passes on
     else:
         scene.cycles.use_denoising = False  # Debian's Blender has no OpenImageDenoise
 

@@ -2,8 +2,9 @@
 animation rendered with `-a` and the add-on enabled from the built zip is
 denoised frame by frame exactly as `mcdtool --denoise` denoises the raw
 frames, leaves every other channel alone and comes closer to a 64-spp render;
-a non-EXR output is reported and Blender still exits 0; the Image editor's
-sequence operator writes sibling files equal to mcdtool's."""
+a still (`-f`) with the report's chain goes to a sibling path; a non-EXR
+output is reported and Blender still exits 0; the Image editor's sequence
+operator writes sibling files equal to mcdtool's."""
 import os
 import shutil
 import subprocess
@@ -51,8 +52,8 @@ def channels(path, wanted):
     return pixels[:, :, [names.index(n) for n in wanted]]
 
 
-def mcdtool_denoise(raw, target):
-    process = subprocess.run([MCDTOOL, str(raw), "--denoise", "-o", str(target)], capture_output=True,
+def mcdtool_denoise(raw, target, chain=("--denoise",)):
+    process = subprocess.run([MCDTOOL, str(raw), *chain, "-o", str(target)], capture_output=True,
                              text=True, timeout=120)
     assert process.returncode == 0, process.stderr
     return target
@@ -89,6 +90,19 @@ def test_animation_is_denoised_like_mcdtool(tmp_path):
     denoised_error = mcdenoise.rel_mse(channels(tmp_path / "out" / "frame_0001.exr", rgb), ref)
     print(f"relMSE against 64 spp: raw 8 spp {raw_error:.5f}, denoised {denoised_error:.5f}")
     assert denoised_error < raw_error
+
+
+def test_still_with_report_chain_to_sibling_path(tmp_path):
+    rendered = run_blender(tmp_path, "--output", tmp_path / "out" / "still_####", "--frames", 1, "--spp", 4,
+                           "--denoise", "--mode", "REPORT_CHAIN", "--pattern", "clean/{name}.exr",
+                           render=("-f", "1"))
+    assert rendered.returncode == 0, rendered.stdout
+    assert "turned on the Object Index pass" in rendered.stdout
+    raw, out = tmp_path / "out" / "still_0001.exr", tmp_path / "out" / "clean" / "still_0001.exr"
+    assert "ViewLayer.IndexOB.X" in read(raw)[0]
+    expected = mcdtool_denoise(raw, tmp_path / "expected.exr", ("--object-median", "7", "--gaussian", "3"))
+    assert read(out)[1].tobytes() == read(expected)[1].tobytes()
+    assert read(out)[1].tobytes() != read(raw)[1].tobytes()
 
 
 def test_non_exr_output_is_reported(tmp_path):
