@@ -2,11 +2,11 @@
 Blender's reports (the Info log and the status bar).
 
 Render handlers run on the render job's thread in the UI, where operators
-must not be called: there a message is printed and queued, and a timer on
-the main thread hands the queue to a modal operator, whose reports Blender
-keeps. In background mode (`blender -b`) the render runs on the main thread
-and a message is reported at once by an operator, which Blender prints to
-the console."""
+must not be called: there a message is queued, and a timer on the main
+thread hands the queue to a modal operator, whose reports Blender keeps (and
+prints to the console). In background mode (`blender -b`) the render runs on
+the main thread and a message is reported at once by an operator, which
+Blender prints to the console."""
 import queue
 import threading
 
@@ -22,15 +22,15 @@ _pending = queue.SimpleQueue()
 def report(level, message):
     """Reports `message` ('INFO', 'WARNING' or 'ERROR'); never raises."""
     text = PREFIX + message
-    if bpy.app.background and threading.current_thread() is threading.main_thread():
+    if not bpy.app.background:
+        _pending.put((level, text))  # reported, and printed by Blender, on the main thread
+    elif threading.current_thread() is threading.main_thread():
         try:
             bpy.ops.mcdenoise.report(level=level, message=text)
         except RuntimeError:
             pass  # an ERROR report raises once Blender has printed it
-        return
-    print(f"{level.capitalize()}: {text}", flush=True)
-    if not bpy.app.background:
-        _pending.put((level, text))
+    else:
+        print(f"{level.capitalize()}: {text}", flush=True)
 
 
 class MCDENOISE_OT_report(bpy.types.Operator):
