@@ -1,5 +1,6 @@
 """reports.py: the add-on's messages, from any thread, to the console and to
-Blender's reports (the Info log and the status bar).
+Blender's reports (the Info log; in the UI the last one is also the status
+bar's text for a few seconds).
 
 Render handlers run on the render job's thread in the UI, where operators
 must not be called: there a message is queued, and a timer on the main
@@ -15,6 +16,8 @@ import bpy
 PREFIX = "mcdenoise: "
 #: Seconds between the UI timer's looks at the queue.
 FLUSH_INTERVAL = 0.25
+#: Seconds the last message stays in the status bar.
+STATUS_SECONDS = 10.0
 
 _pending = queue.SimpleQueue()
 
@@ -48,7 +51,7 @@ class MCDENOISE_OT_report(bpy.types.Operator):
 
 
 class MCDENOISE_OT_show_reports(bpy.types.Operator):
-    """Reports the queued messages from a modal step, so they reach the Info log and the status bar"""
+    """Reports the queued messages from a modal step, so they reach the Info log, and shows the last in the status bar"""
     bl_idname = "mcdenoise.show_reports"
     bl_label = "mcdenoise Show Reports"
     bl_options = {"INTERNAL"}
@@ -62,10 +65,22 @@ class MCDENOISE_OT_show_reports(bpy.types.Operator):
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
         context.window_manager.event_timer_remove(self._timer)
+        messages = []
         while not _pending.empty():
-            level, text = _pending.get()
+            messages.append(_pending.get())
+        for level, text in messages:
             self.report({level}, text)
+        if messages:
+            context.workspace.status_text_set(messages[-1][1])
+            if bpy.app.timers.is_registered(_clear_status):
+                bpy.app.timers.unregister(_clear_status)
+            bpy.app.timers.register(_clear_status, first_interval=STATUS_SECONDS)
         return {"FINISHED"}
+
+
+def _clear_status():
+    for workspace in bpy.data.workspaces:
+        workspace.status_text_set(None)
 
 
 def _flush():
