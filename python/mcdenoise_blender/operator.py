@@ -13,8 +13,8 @@ class MCDENOISE_OT_denoise_sequence(options.DenoiseOptions, bpy.types.Operator):
     bl_idname = "mcdenoise.denoise_sequence"
     bl_label = "Denoise EXR Sequence"
 
-    directory: bpy.props.StringProperty(subtype="DIR_PATH")
-    files: bpy.props.CollectionProperty(type=bpy.types.OperatorFileListElement)
+    directory: bpy.props.StringProperty(subtype="DIR_PATH", options={"HIDDEN", "SKIP_SAVE"})
+    files: bpy.props.CollectionProperty(type=bpy.types.OperatorFileListElement, options={"HIDDEN", "SKIP_SAVE"})
     filter_glob: bpy.props.StringProperty(default="*.exr", options={"HIDDEN"})
 
     def invoke(self, context, event):
