@@ -22,9 +22,14 @@ OUTPUT_ITEMS = (
 )
 
 
+def mode_property(update=None):
+    """The Mode property (`update` is called when it changes)."""
+    return bpy.props.EnumProperty(name="Mode", items=MODE_ITEMS, default="DENOISE", update=update)
+
+
 class DenoiseOptions:
     """Mix-in: the properties both the scene settings and the operator have."""
-    mode: bpy.props.EnumProperty(name="Mode", items=MODE_ITEMS, default="DENOISE")
+    mode: mode_property()
     output: bpy.props.EnumProperty(name="Output", items=OUTPUT_ITEMS, default="IN_PLACE")
     pattern: bpy.props.StringProperty(
         name="Path", default="{name}_denoised.exr",

@@ -50,7 +50,7 @@ class McdenoiseSettings(options.DenoiseOptions, bpy.types.PropertyGroup):
     enabled: bpy.props.BoolProperty(
         name="Denoise written frames", default=False, update=_on_change,
         description="Denoise every frame Blender writes as OpenEXR MultiLayer, after it is written")
-    mode: bpy.props.EnumProperty(name="Mode", items=options.MODE_ITEMS, default="DENOISE", update=_on_change)
+    mode: options.mode_property(update=_on_change)  # the passes it needs change with it
 
 
 def register():
