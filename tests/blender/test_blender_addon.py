@@ -3,8 +3,9 @@ animation rendered with `-a` and the add-on enabled from the built zip is
 denoised frame by frame exactly as `mcdtool --denoise` denoises the raw
 frames, leaves every other channel alone and comes closer to a 64-spp render;
 a still (`-f`) with the report's chain goes to a sibling path; a non-EXR
-output is reported and Blender still exits 0; the Image editor's sequence
-operator writes sibling files equal to mcdtool's."""
+output, or frames that cannot be written, are reported and Blender still
+exits 0; the Image editor's sequence operator writes sibling files equal to
+mcdtool's."""
 import os
 import shutil
 import subprocess
@@ -111,6 +112,15 @@ def test_non_exr_output_is_reported(tmp_path):
     assert rendered.returncode == 0, rendered.stdout
     assert "Warning: mcdenoise: the output format PNG cannot carry the passes" in rendered.stdout, rendered.stdout
     assert (tmp_path / "out" / "frame_0001.png").exists()
+
+
+def test_failed_frames_are_reported_and_the_render_goes_on(tmp_path):
+    rendered = run_blender(tmp_path, "--output", tmp_path / "out" / "frame_####", "--frames", 2, "--spp", 2,
+                           "--denoise", "--pattern", "/proc/no-such-folder/{name}.exr")
+    assert rendered.returncode == 0, rendered.stdout
+    assert "Error: mcdenoise: frame 1 (1 done)" in rendered.stdout, rendered.stdout
+    assert "0 frame(s) denoised, 2 failed" in rendered.stdout, rendered.stdout
+    assert (tmp_path / "out" / "frame_0002.exr").exists()
 
 
 def test_sequence_operator_writes_sibling_files(tmp_path):
