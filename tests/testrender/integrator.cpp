@@ -138,13 +138,15 @@ PathResult trace_path(const Scene& scene, const Ray& camera_ray, SampleRng& rng)
 
 GeometryAovs trace_geometry(const Scene& scene, const Ray& center_ray)
 {
-    GeometryAovs g { std::numeric_limits<float>::infinity(), -1, -1 };
+    GeometryAovs g { std::numeric_limits<float>::infinity(), -1, -1, -1, Vec3(0.0) };
     Hit hit;
     if (!scene.intersect(center_ray, hit))
         return g;
     const Object& object = scene.objects[size_t(hit.object)];
     g.depth = float(hit.t);
     g.id = object.id;
+    g.object = hit.object;
+    g.position = hit.position;
     if (scene.materials[size_t(object.material)].kind == MaterialKind::mirror) {
         const Vec3 n = dot(center_ray.dir, hit.normal) < 0 ? hit.normal : -hit.normal;
         const Vec3 r = reflect(center_ray.dir, n);

@@ -24,6 +24,8 @@ struct GeometryAovs {
     float depth;  ///< first-hit distance, +Inf for a miss
     int id;       ///< object id of the first hit, -1 for a miss
     int reflid;   ///< at a mirror first hit, object id its reflection ray hits; else -1
+    int object;   ///< index of the first-hit object in Scene::objects, -1 for a miss
+    Vec3 position;  ///< the first-hit point (world space); unset for a miss
 };
 
 GeometryAovs trace_geometry(const Scene& scene, const Ray& center_ray);

@@ -15,7 +15,8 @@ const std::vector<std::string>& channel_names()
     static const std::vector<std::string> names {
         "R",      "G",      "B",      "albedo.R", "albedo.G", "albedo.B", "N.X",
         "N.Y",    "N.Z",    "Z",      "id",       "reflid",   "var.R",    "var.G",
-        "var.B",  "A.R",    "A.G",    "A.B",      "B.R",      "B.G",      "B.B"
+        "var.B",  "A.R",    "A.G",    "A.B",      "B.R",      "B.G",      "B.B",
+        "motion.X", "motion.Y", "motion.Z", "motion.W"
     };
     return names;
 }
@@ -33,6 +34,7 @@ OIIO::ImageBuf to_image(const RenderBuffers& b, const std::string& scene_name,
     spec.attribute("testrender:scene", scene_name);
     spec.attribute("testrender:spp", settings.spp);
     spec.attribute("testrender:seed", int(settings.seed));
+    spec.attribute("testrender:frame", settings.frame);
     spec.attribute("testrender:render_seconds", float(b.seconds));
     const double samples = double(b.width) * b.height * settings.spp;
     spec.attribute("testrender:samples_per_second",
@@ -42,7 +44,7 @@ OIIO::ImageBuf to_image(const RenderBuffers& b, const std::string& scene_name,
     const std::pair<const std::vector<float>*, int> parts[] = {
         { &b.beauty, 3 }, { &b.albedo, 3 },   { &b.normal, 3 }, { &b.depth, 1 },
         { &b.id, 1 },     { &b.reflid, 1 },   { &b.variance, 3 }, { &b.half_a, 3 },
-        { &b.half_b, 3 }
+        { &b.half_b, 3 }, { &b.motion, 4 }
     };
     const size_t npix = size_t(b.width) * size_t(b.height);
     std::vector<float> pixels(npix * size_t(nch));
