@@ -38,7 +38,7 @@ foreach(case IN LISTS cases)
 endforeach()
 
 execute_process(COMMAND ${TESTRENDER} --list RESULT_VARIABLE rc OUTPUT_VARIABLE stdout)
-foreach(scene cornell mirrors textured dof interior shot_static shot_truck shot_object)
+foreach(scene cornell mirrors textured dof interior transparent shot_static shot_truck shot_object)
   if(NOT rc EQUAL 0 OR NOT stdout MATCHES "${scene} ")
     message(FATAL_ERROR "testrender --list: exit ${rc}, no ${scene}:\n${stdout}")
   endif()

@@ -3,6 +3,7 @@
 // a pixel's center ray.
 #pragma once
 
+#include "passes.h"
 #include "rng.h"
 #include "scene.h"
 
@@ -13,6 +14,8 @@ struct PathResult {
     Vec3 radiance;
     Vec3 albedo;  ///< reflectance of the first non-specular hit, times mirror tints
     Vec3 normal;  ///< first-hit normal facing the camera; 0 for a miss
+    double alpha = 1;  ///< 0 if the camera ray escapes through a transparent film
+    SamplePasses passes;  ///< `radiance` split into the light passes
 };
 
 /// Trace one path from `camera_ray`, drawing random numbers from `rng`.

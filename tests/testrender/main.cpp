@@ -21,7 +21,7 @@ constexpr int max_frame = 999999;
 
 const char* usage_text =
     "usage: testrender --scene NAME [--res WxH] [--spp N] [--seed N] [--frame N] [--threads N]\n"
-    "                  -o FILE.exr\n"
+    "                  [--passes] -o FILE.exr\n"
     "       testrender --list\n"
     "  --scene NAME   built-in scene (see --list)\n"
     "  --res WxH      image size in pixels (default 256x256)\n"
@@ -30,6 +30,7 @@ const char* usage_text =
     "  --frame N      frame of the scene's animation, 0..999999 (default 0); the noise\n"
     "                 differs per frame, frame 0 uses the seed as given\n"
     "  --threads N    worker threads, 0 = all cores (default 0); output does not depend on it\n"
+    "  --passes       also write the light passes (DiffDir ... Env, Cycles' names)\n"
     "  -o FILE        output OpenEXR file\n"
     "  -q             do not print the summary line\n";
 
@@ -88,6 +89,10 @@ int main(int argc, char** argv)
         }
         if (arg == "-q") {
             quiet = true;
+            continue;
+        }
+        if (arg == "--passes") {
+            settings.passes = true;
             continue;
         }
         const bool takes_value = arg == "--scene" || arg == "--res" || arg == "--spp"

@@ -21,12 +21,25 @@ void store3(std::vector<float>& buf, size_t pixel, const Vec3& v)
     buf[pixel * 3 + 2] = float(v.z);
 }
 
+void add_passes(SamplePasses& sum, const SamplePasses& p)
+{
+    for (int lobe = 0; lobe < lobe_count; ++lobe) {
+        sum.colour[lobe] += p.colour[lobe];
+        sum.direct[lobe] += p.direct[lobe];
+        sum.indirect[lobe] += p.indirect[lobe];
+    }
+    sum.emit += p.emit;
+    sum.env += p.env;
+}
+
 void render_pixel(const Scene& scene, const ShotCameras& cameras, const RenderSettings& s,
                   uint64_t seed, int x, int y, RenderBuffers& out)
 {
     const Camera& camera = cameras.current;
     const size_t pixel = size_t(y) * size_t(s.width) + size_t(x);
     Vec3 mean, m2, sum_a, sum_b, albedo, normal;  // Welford's running mean and M2
+    double coverage = 0;
+    SamplePasses pass_sums;
     for (int i = 0; i < s.spp; ++i) {
         SampleRng rng(seed, pixel, uint64_t(i));
         const double jx = rng.next(), jy = rng.next(), lu = rng.next(), lv = rng.next();
@@ -38,6 +51,9 @@ void render_pixel(const Scene& scene, const ShotCameras& cameras, const RenderSe
         (i % 2 == 0 ? sum_a : sum_b) += r.radiance;
         albedo += r.albedo;
         normal += r.normal;
+        coverage += r.alpha;
+        if (s.passes)
+            add_passes(pass_sums, r.passes);
     }
     const int n = s.spp;
     const int na = (n + 1) / 2, nb = n / 2;
@@ -47,6 +63,10 @@ void render_pixel(const Scene& scene, const ShotCameras& cameras, const RenderSe
     store3(out.half_b, pixel, nb > 0 ? sum_b * (1.0 / nb) : Vec3(0.0));
     store3(out.albedo, pixel, albedo * (1.0 / n));
     store3(out.normal, pixel, normal * (1.0 / n));
+    if (!out.alpha.empty())
+        out.alpha[pixel] = float(coverage / n);
+    if (s.passes)
+        finish_passes(pass_sums, n, &out.passes[pixel * pass_channels]);
     const Ray center = camera.center_ray(x + 0.5, y + 0.5);
     const GeometryAovs g = trace_geometry(scene, center);
     out.depth[pixel] = g.depth;
@@ -75,6 +95,10 @@ RenderBuffers render(const Scene& scene, const RenderSettings& s)
     for (std::vector<float>* b : { &out.depth, &out.id, &out.reflid })
         b->assign(npix, 0.0f);
     out.motion.assign(npix * 4, 0.0f);
+    if (scene.transparent_film)
+        out.alpha.assign(npix, 0.0f);
+    if (s.passes)
+        out.passes.assign(npix * pass_channels, 0.0f);
 
     const ShotCameras cameras(scene, s.width, s.height);
     const uint64_t seed = frame_seed(s.seed, s.frame);

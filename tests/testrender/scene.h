@@ -40,6 +40,9 @@ struct Scene {
     std::vector<Object> objects;
     std::vector<Material> materials;
     Vec3 background { 0, 0, 0 };  ///< radiance of rays that escape
+    /// Camera rays that escape are transparent (alpha 0, no colour) instead
+    /// of seeing the background, which still lights the scene.
+    bool transparent_film = false;
     CameraParams camera;
     int max_depth = 8;       ///< longest path, in bounces
     int roulette_depth = 3;  ///< bounces before Russian roulette starts

@@ -1,7 +1,8 @@
 // scenes.cpp: the built-in scenes. Each exercises something a denoiser must
 // handle: cornell (diffuse, mirror and glossy objects, direct light),
 // mirrors (reflections of distinct objects), textured (high-frequency
-// albedo), dof (defocus over depth), interior (mostly indirect light); the
+// albedo), dof (defocus over depth), interior (mostly indirect light),
+// transparent (a transparent film: alpha); the
 // animated shots are in shots.cpp. These stills ignore the frame.
 #include "scene.h"
 #include "scene_parts.h"
@@ -163,6 +164,30 @@ void interior(Scene& s, int /*frame: still*/)
     s.roulette_depth = 4;
 }
 
+void transparent(Scene& s, int /*frame: still*/)
+{
+    s.description = "objects on a floor tile lit only by the sky, transparent film: alpha 0 "
+                    "where the camera sees no geometry";
+    const int tile = s.add_material(
+        Material::diffuse(Texture::checker({ 0.7, 0.7, 0.65 }, { 0.25, 0.25, 0.3 }, 3)));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.15, 0.1 })));
+    const int blue = s.add_material(Material::diffuse(Texture::constant({ 0.15, 0.3, 0.7 })));
+    const int mirror = s.add_material(Material::mirror({ 0.9, 0.9, 0.9 }));
+    // ids: tile 1, red sphere 2, blue box 3, mirror sphere 4
+    s.add(facing_quad({ -1.2, 0, -1.2 }, { 2.4, 0, 0 }, { 0, 0, 2.4 }, { 0, 1, 0 }), tile, 1);
+    s.add(Shape::sphere({ -0.5, 0.4, 0.1 }, 0.4), red, 2);
+    s.add(Shape::box({ 0.55, 0.35, -0.35 }, { 0.3, 0.35, 0.3 }, 30), blue, 3);
+    s.add(Shape::sphere({ 0.45, 0.25, 0.6 }, 0.25), mirror, 4);
+    // no light and only diffuse and mirror surfaces (weights <= 1): every
+    // sample's radiance is at most the sky's, below 1, so colour <= alpha
+    s.background = { 0.8, 0.85, 0.9 };
+    s.transparent_film = true;
+    s.camera.eye = { 0, 1.8, 3.4 };
+    s.camera.look_at = { 0, 0.2, 0 };
+    s.camera.vfov_degrees = 45;
+    s.max_depth = 6;
+}
+
 struct Entry {
     const char* name;
     void (*build)(Scene&, int frame);
@@ -170,7 +195,8 @@ struct Entry {
 
 const Entry scenes[] = { { "cornell", cornell },         { "mirrors", mirrors },
                          { "textured", textured },       { "dof", dof },
-                         { "interior", interior },       { "shot_static", shot_static },
+                         { "interior", interior },       { "transparent", transparent },
+                         { "shot_static", shot_static },
                          { "shot_truck", shot_truck },   { "shot_object", shot_object } };
 
 void build(const Entry& e, int frame, Scene& scene)

@@ -252,7 +252,7 @@ TEST(TestRenderOutput, ChannelsAndMetadata)
     const OIIO::ImageSpec& spec = in.spec();
     EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
     EXPECT_EQ(spec.nchannels, 25);
-    for (const std::string& name : channel_names())
+    for (const std::string& name : channel_names(b))
         EXPECT_GE(spec.channelindex(name), 0) << name;
     EXPECT_EQ(spec.get_string_attribute("testrender:scene"), "cornell");
     EXPECT_EQ(spec.get_int_attribute("testrender:spp"), 2);
