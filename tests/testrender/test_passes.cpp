@@ -241,6 +241,25 @@ TEST(TestRenderPasses, TransparentFilmIsPremultipliedWithAlpha)
     EXPECT_TRUE(render_passes(scene_named("cornell"), 4, 3, 1).alpha.empty());
 }
 
+TEST(TestRenderPasses, IdenticalForAnyThreadCount)
+{
+    for (const char* name : { "transparent", "shot_object" }) {
+        Scene scene = scene_named(name);
+        RenderSettings settings;
+        settings.width = 20;
+        settings.height = 15;
+        settings.spp = 3;
+        settings.passes = true;
+        settings.threads = 1;
+        const RenderBuffers one = render(scene, settings);
+        settings.threads = 3;
+        const RenderBuffers three = render(scene, settings);
+        EXPECT_EQ(one.passes, three.passes) << name;
+        EXPECT_EQ(one.alpha, three.alpha) << name;
+        EXPECT_EQ(one.motion, three.motion) << name;
+    }
+}
+
 TEST(TestRenderPasses, FileHasThePassAndAlphaChannels)
 {
     RenderSettings settings;
