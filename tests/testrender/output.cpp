@@ -54,10 +54,11 @@ OIIO::ImageBuf to_image(const RenderBuffers& b, const std::string& scene_name,
                    float(b.seconds > 0 ? samples / b.seconds : 0.0));
 
     // source buffer and channel count, in file channel order
+    // (alpha and passes are empty when absent, and then skipped)
     const std::pair<const std::vector<float>*, int> parts[] = {
-        { &b.beauty, 3 }, { &b.albedo, 3 },   { &b.normal, 3 }, { &b.depth, 1 },
-        { &b.id, 1 },     { &b.reflid, 1 },   { &b.variance, 3 }, { &b.half_a, 3 },
-        { &b.half_b, 3 }, { &b.motion, 4 },      { &b.alpha, 1 },    { &b.passes, pass_channels }
+        { &b.beauty, 3 },   { &b.albedo, 3 }, { &b.normal, 3 }, { &b.depth, 1 },
+        { &b.id, 1 },       { &b.reflid, 1 }, { &b.variance, 3 }, { &b.half_a, 3 },
+        { &b.half_b, 3 },   { &b.motion, 4 }, { &b.alpha, 1 },  { &b.passes, pass_channels }
     };
     const size_t npix = size_t(b.width) * size_t(b.height);
     std::vector<float> pixels(npix * size_t(nch));

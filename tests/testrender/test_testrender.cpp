@@ -257,6 +257,7 @@ TEST(TestRenderOutput, ChannelsAndMetadata)
     EXPECT_EQ(spec.get_string_attribute("testrender:scene"), "cornell");
     EXPECT_EQ(spec.get_int_attribute("testrender:spp"), 2);
     EXPECT_EQ(spec.get_int_attribute("testrender:seed"), 5);
+    EXPECT_EQ(spec.get_int_attribute("testrender:frame", -1), 0);
     EXPECT_GE(spec.get_float_attribute("testrender:render_seconds", -1), 0.0f);
     EXPECT_GT(spec.get_float_attribute("testrender:samples_per_second", -1), 0.0f);
     // the file holds exactly the buffers
