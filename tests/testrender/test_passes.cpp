@@ -149,6 +149,36 @@ TEST(TestRenderPasses, GlossyPlaneSplitsItsDirectLightBetweenTheLobes)
     }
 }
 
+/// Form factor from a point to a parallel a x b rectangle at height 1 whose
+/// corner is straight above the point (as in test_testrender.cpp).
+double corner_form_factor(double a, double b)
+{
+    const double ra = std::sqrt(1 + a * a), rb = std::sqrt(1 + b * b);
+    return (a / ra * std::atan(b / ra) + b / rb * std::atan(a / rb)) / (2 * pi);
+}
+
+TEST(TestRenderPasses, GlossyPlanesDiffuseShareIsUnbiased)
+{
+    // the diffuse lobe alone reflects base / pi * E with E = pi * 4 F(0.5,
+    // 0.5) from the unit light: the split between the lobes (by their share
+    // of the BSDF, for light and BSDF samples) must not bias either pass
+    const Vec3 base(0.2, 0.3, 0.4);
+    const RenderBuffers b = render_passes(
+        lit_plane(Material::glossy(Texture::constant(base), Vec3(0.5), 0.3)), 3, 3, 20000);
+    const size_t p = 4;
+    const double irradiance_over_pi = 4 * corner_form_factor(0.5, 0.5);
+    for (int c = 0; c < 3; ++c) {
+        // the beauty's standard error bounds the diffuse part's (a part of it)
+        const double sigma = std::sqrt(double(b.variance[p * 3 + size_t(c)]));
+        std::printf("channel %d: DiffCol * DiffDir %.5f, expected %.5f, sigma %.5f\n", c,
+                    double(pass(b, p, diff_col, c)) * pass(b, p, diff_dir, c),
+                    base[c] * irradiance_over_pi, sigma);
+        EXPECT_NEAR(double(pass(b, p, diff_col, c)) * pass(b, p, diff_dir, c),
+                    base[c] * irradiance_over_pi, 4 * sigma + 1e-4)
+            << "channel " << c;
+    }
+}
+
 /// The first pixel (row by row) whose 3x3 neighbourhood is all `id`.
 size_t interior_pixel(const RenderBuffers& b, float id)
 {
