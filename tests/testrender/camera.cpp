@@ -66,7 +66,11 @@ Ray Camera::generate(double fx, double fy, double lu, double lv) const
 
 bool Camera::project(const Vec3& p, double& fx, double& fy) const
 {
-    const Vec3 d = p - params_.eye;
+    return project_direction(p - params_.eye, fx, fy);
+}
+
+bool Camera::project_direction(const Vec3& d, double& fx, double& fy) const
+{
     const double depth = dot(d, forward_);
     if (depth <= 0)
         return false;

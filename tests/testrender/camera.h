@@ -32,6 +32,11 @@ public:
     /// lens center; false if it is behind the camera.
     bool project(const Vec3& p, double& fx, double& fy) const;
 
+    /// The film position a direction at infinity projects to (where a ray
+    /// along `dir` from the lens center crosses the film); false if it
+    /// points behind the camera.
+    bool project_direction(const Vec3& dir, double& fx, double& fy) const;
+
     const CameraParams& params() const { return params_; }
 
 private:

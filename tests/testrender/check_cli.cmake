@@ -9,6 +9,8 @@ set(cases
   "--scene,cornell,--res,0x16,-o,${out}|--res wants"
   "--scene,cornell,--seed,-1,-o,${out}|--seed wants"
   "--scene,cornell,--threads,many,-o,${out}|--threads wants"
+  "--scene,shot_truck,--frame,-1,-o,${out}|--frame wants"
+  "--scene,shot_truck,--frame,1000000,-o,${out}|--frame wants"
   "--scene,nosuch,-o,${out}|unknown scene 'nosuch'"
   "--scene,cornell,--bogus,-o,${out}|unknown argument '--bogus'"
   "--scene,cornell|-o FILE is required"
@@ -36,7 +38,7 @@ foreach(case IN LISTS cases)
 endforeach()
 
 execute_process(COMMAND ${TESTRENDER} --list RESULT_VARIABLE rc OUTPUT_VARIABLE stdout)
-foreach(scene cornell mirrors textured dof interior)
+foreach(scene cornell mirrors textured dof interior transparent shot_static shot_truck shot_object)
   if(NOT rc EQUAL 0 OR NOT stdout MATCHES "${scene} ")
     message(FATAL_ERROR "testrender --list: exit ${rc}, no ${scene}:\n${stdout}")
   endif()

@@ -17,15 +17,20 @@ constexpr int exit_usage = 2;
 constexpr int max_resolution = 16384;
 constexpr int max_spp = 1 << 20;
 constexpr int max_threads = 1024;
+constexpr int max_frame = 999999;
 
 const char* usage_text =
-    "usage: testrender --scene NAME [--res WxH] [--spp N] [--seed N] [--threads N] -o FILE.exr\n"
+    "usage: testrender --scene NAME [--res WxH] [--spp N] [--seed N] [--frame N] [--threads N]\n"
+    "                  [--passes] -o FILE.exr\n"
     "       testrender --list\n"
     "  --scene NAME   built-in scene (see --list)\n"
     "  --res WxH      image size in pixels (default 256x256)\n"
     "  --spp N        samples per pixel, >= 1 (default 16)\n"
     "  --seed N       random seed, 0..2147483647 (default 1)\n"
+    "  --frame N      frame of the scene's animation, 0..999999 (default 0); the noise\n"
+    "                 differs per frame, frame 0 uses the seed as given\n"
     "  --threads N    worker threads, 0 = all cores (default 0); output does not depend on it\n"
+    "  --passes       also write the light passes (DiffDir ... Env, Cycles' names)\n"
     "  -o FILE        output OpenEXR file\n"
     "  -q             do not print the summary line\n";
 
@@ -74,7 +79,7 @@ int main(int argc, char** argv)
             for (const std::string& name : scene_names()) {
                 Scene s;
                 make_scene(name, s);
-                std::printf("%-10s %s\n", name.c_str(), s.description.c_str());
+                std::printf("%-12s %s\n", name.c_str(), s.description.c_str());
             }
             return 0;
         }
@@ -86,8 +91,13 @@ int main(int argc, char** argv)
             quiet = true;
             continue;
         }
+        if (arg == "--passes") {
+            settings.passes = true;
+            continue;
+        }
         const bool takes_value = arg == "--scene" || arg == "--res" || arg == "--spp"
-                                 || arg == "--seed" || arg == "--threads" || arg == "-o";
+                                 || arg == "--seed" || arg == "--frame" || arg == "--threads"
+                                 || arg == "-o";
         if (!takes_value)
             return usage_error("unknown argument '" + arg + "'");
         if (i + 1 >= argc)
@@ -111,6 +121,11 @@ int main(int argc, char** argv)
             if (!parse_int(value, 0, 2147483647LL, n))
                 return usage_error("--seed wants an integer in 0..2147483647, got '" + value + "'");
             settings.seed = uint64_t(n);
+        } else if (arg == "--frame") {
+            if (!parse_int(value, 0, max_frame, n))
+                return usage_error("--frame wants an integer in 0.." + std::to_string(max_frame)
+                                   + ", got '" + value + "'");
+            settings.frame = int(n);
         } else if (arg == "--threads") {
             if (!parse_int(value, 0, max_threads, n))
                 return usage_error("--threads wants an integer in 0.." + std::to_string(max_threads)
@@ -123,7 +138,7 @@ int main(int argc, char** argv)
     if (output.empty())
         return usage_error("-o FILE is required");
     Scene scene;
-    if (!make_scene(scene_name, scene))
+    if (!make_scene(scene_name, scene, settings.frame))
         return usage_error("unknown scene '" + scene_name + "' (--list shows the scenes)");
 
     const RenderBuffers buffers = render(scene, settings);
@@ -135,9 +150,9 @@ int main(int argc, char** argv)
     }
     if (!quiet) {
         const double samples = double(settings.width) * settings.height * settings.spp;
-        std::printf("testrender: %s %dx%d %d spp seed %llu: %.3f s, %.0f samples/s -> %s\n",
+        std::printf("testrender: %s %dx%d %d spp seed %llu frame %d: %.3f s, %.0f samples/s -> %s\n",
                     scene_name.c_str(), settings.width, settings.height, settings.spp,
-                    (unsigned long long)settings.seed, buffers.seconds,
+                    (unsigned long long)settings.seed, settings.frame, buffers.seconds,
                     buffers.seconds > 0 ? samples / buffers.seconds : 0.0, output.c_str());
     }
     return 0;

@@ -202,4 +202,39 @@ Vec3 surface_albedo(const Material& m, const Vec3& base)
     }
 }
 
+void lobe_colours(const Material& m, const Vec3& base, Vec3 colours[3])
+{
+    colours[0] = colours[1] = colours[2] = Vec3(0.0);
+    switch (m.kind) {
+    case MaterialKind::diffuse: colours[0] = base; break;
+    case MaterialKind::glossy:
+        colours[0] = base;
+        colours[1] = m.specular;
+        break;
+    case MaterialKind::mirror: colours[1] = m.specular; break;
+    case MaterialKind::glass: colours[1] = colours[2] = Vec3(1.0); break;
+    case MaterialKind::emitter: break;
+    }
+}
+
+void lobe_shares(const Material& m, const Vec3& base, const Vec3& wo, const Vec3& wi,
+                 Vec3 shares[3])
+{
+    shares[0] = shares[1] = shares[2] = Vec3(0.0);
+    switch (m.kind) {
+    case MaterialKind::diffuse: shares[0] = Vec3(1.0); break;
+    case MaterialKind::glossy: {
+        const Vec3 f = bsdf_eval(m, base, wo, wi);
+        const Vec3 fd = base * (inv_pi * std::max(wi.z, 0.0));
+        auto share = [](double part, double whole) { return whole > 0 ? part / whole : 1.0; };
+        shares[0] = Vec3(share(fd.x, f.x), share(fd.y, f.y), share(fd.z, f.z));
+        shares[1] = Vec3(1.0) - shares[0];
+        break;
+    }
+    case MaterialKind::mirror: shares[1] = Vec3(1.0); break;
+    case MaterialKind::glass: shares[wi.z * wo.z > 0 ? 1 : 2] = Vec3(1.0); break;
+    case MaterialKind::emitter: break;
+    }
+}
+
 }  // namespace testrender

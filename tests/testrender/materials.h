@@ -53,4 +53,16 @@ bool bsdf_sample(const Material& m, const Vec3& base, const Vec3& wo, bool enter
 /// The reflectance the albedo AOV reports at a non-specular hit.
 Vec3 surface_albedo(const Material& m, const Vec3& base);
 
+/// The light passes' colours of a first hit (lobe weights, indexed by
+/// `Lobe` in passes.h): diffuse: base; glossy: base and F0; mirror: its
+/// tint as glossy; glass: 1 as glossy (reflection) and as transmission.
+void lobe_colours(const Material& m, const Vec3& base, Vec3 colours[3]);
+
+/// How light scattered from direction wi into wo divides among the lobes
+/// (per channel, summing to 1): diffuse and glossy in proportion to their
+/// share of bsdf_eval; a mirror is glossy; glass is glossy when wi is on
+/// wo's side (reflection), else transmission.
+void lobe_shares(const Material& m, const Vec3& base, const Vec3& wo, const Vec3& wi,
+                 Vec3 shares[3]);
+
 }  // namespace testrender

@@ -11,11 +11,12 @@
 namespace testrender {
 
 /// Channel names in file order: R,G,B, albedo.{R,G,B}, N.{X,Y,Z}, Z, id,
-/// reflid, var.{R,G,B}, A.{R,G,B}, B.{R,G,B}.
-const std::vector<std::string>& channel_names();
+/// reflid, var.{R,G,B}, A.{R,G,B}, B.{R,G,B}, motion.{X,Y,Z,W}; then A (the
+/// alpha) if the buffers have one, then the light passes if they have them.
+std::vector<std::string> channel_names(const RenderBuffers& buffers);
 
 /// The buffers as a float ImageBuf with the channels above and the metadata
-/// testrender:scene, testrender:spp, testrender:seed,
+/// testrender:scene, testrender:spp, testrender:seed, testrender:frame,
 /// testrender:render_seconds and testrender:samples_per_second.
 OIIO::ImageBuf to_image(const RenderBuffers& buffers, const std::string& scene_name,
                         const RenderSettings& settings);

@@ -1,9 +1,12 @@
 // preview.cpp: testrender_preview, which turns testrender EXRs into the PNG
-// pictures of docs/testrender.md: beauty tiles in sRGB side by side, or one
-// file's AOVs (albedo, normals, depth, id and reflid false-coloured).
+// pictures of docs/testrender.md: beauty tiles in sRGB side by side, one
+// file's AOVs (albedo, normals, depth, id and reflid false-coloured), its
+// light passes, or the motion of several frames.
 //
 //   testrender_preview [--exposure E] --beauty A.exr [B.exr ...] -o sheet.png
 //   testrender_preview --aovs A.exr -o sheet.png
+//   testrender_preview [--exposure E] --passes A.exr -o sheet.png
+//   testrender_preview --motion A.exr [B.exr ...] -o sheet.png
 #include "rng.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -94,6 +97,24 @@ ImageBuf normals_rgb(const ImageBuf& src)
     return IBA::clamp(IBA::mad(n, 0.5f, 0.5f), 0.0f, 1.0f);
 }
 
+/// The light passes the --passes sheet shows, left to right.
+const char* const sheet_passes[] = { "DiffCol", "DiffDir", "DiffInd", "GlossCol", "GlossDir",
+                                     "GlossInd", "TransInd", "Emit",    "Env" };
+
+/// Motion vectors per pixel that saturate the --motion colours.
+constexpr float motion_full_scale = 12;
+
+/// The previous-frame motion (X, Y) as colour: red = X, green = Y, each
+/// 0.5 + value / (2 full scale); 0.5 grey is no motion.
+ImageBuf motion_rgb(const ImageBuf& src)
+{
+    const ImageBuf xy = select(src, { "motion.X", "motion.Y", "motion.Y" });
+    const float k = 0.5f / motion_full_scale;
+    const float scale[3] = { k, k, 0 }, offset[3] = { 0.5f, 0.5f, 0.5f };
+    return IBA::clamp(IBA::mad(xy, OIIO::cspan<float>(scale), OIIO::cspan<float>(offset)), 0.0f,
+                      1.0f);
+}
+
 int fail(const std::string& message)
 {
     std::fprintf(stderr, "testrender_preview: error: %s\n", message.c_str());
@@ -109,7 +130,7 @@ int main(int argc, char** argv)
     float exposure = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--beauty" || arg == "--aovs")
+        if (arg == "--beauty" || arg == "--aovs" || arg == "--passes" || arg == "--motion")
             mode = arg;
         else if (arg == "-o" && i + 1 < argc)
             output = argv[++i];
@@ -120,7 +141,7 @@ int main(int argc, char** argv)
     }
     if (mode.empty() || output.empty() || inputs.empty())
         return fail("usage: testrender_preview [--exposure E] (--beauty A.exr [B.exr ...] | "
-                    "--aovs A.exr) -o out.png");
+                    "--aovs A.exr | --passes A.exr | --motion A.exr [B.exr ...]) -o out.png");
     std::vector<ImageBuf> tiles;
     for (const std::string& in : inputs) {
         ImageBuf src(in);
@@ -128,6 +149,16 @@ int main(int argc, char** argv)
             return fail(in + ": " + src.geterror());
         if (mode == "--beauty") {
             tiles.push_back(to_srgb(select(src, { "R", "G", "B" }), exposure));
+        } else if (mode == "--passes") {
+            for (const char* pass : sheet_passes) {
+                const std::string p = pass;
+                ImageBuf rgb = select(src, { p + ".R", p + ".G", p + ".B" });
+                if (!rgb.initialized())
+                    return fail(in + ": no " + p + " (render with --passes)");
+                tiles.push_back(to_srgb(rgb, exposure));
+            }
+        } else if (mode == "--motion") {
+            tiles.push_back(motion_rgb(src));
         } else {
             tiles.push_back(to_srgb(select(src, { "albedo.R", "albedo.G", "albedo.B" }), 0));
             tiles.push_back(normals_rgb(src));

@@ -15,6 +15,16 @@ inline uint64_t mix64(uint64_t z)
     return z ^ (z >> 31);
 }
 
+/// The seed the samples of frame `frame` are drawn with: `seed` itself for
+/// frame 0 (so a still render is unchanged by the frame option), otherwise a
+/// hash of both, so every frame of a shot has its own, independent noise.
+inline uint64_t frame_seed(uint64_t seed, int64_t frame)
+{
+    if (frame == 0)
+        return seed;
+    return mix64(mix64(seed ^ 0x632be59bd9b4e019ULL) + uint64_t(frame) * 0x9e3779b97f4a7c15ULL);
+}
+
 /// The random stream of one sample of one pixel. `next()` returns the value
 /// of dimension 0, 1, 2, ... in turn: hash(key, dimension), where the key
 /// hashes (seed, pixel, sample).

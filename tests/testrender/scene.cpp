@@ -1,5 +1,6 @@
 // scene.cpp: object storage, brute-force nearest-hit and shadow queries
-// (the scenes have tens of objects) and area-proportional light sampling.
+// (the scenes have tens of objects), area-proportional light sampling, and
+// the object motion between neighbouring frames.
 #include "scene.h"
 
 #include <algorithm>
@@ -22,6 +23,28 @@ int Scene::add(const Shape& shape, int material, int id)
         light_cdf_.push_back(total_light_area_);
     }
     return index;
+}
+
+void Scene::set_neighbours(const Scene& previous, const Scene& next)
+{
+    neighbours.clear();
+    for (const Scene* other : { &previous, &next }) {
+        NeighbourFrame f;
+        f.camera = other->camera;
+        for (size_t i = 0; i < objects.size(); ++i)
+            f.shift.push_back(other->objects[i].shape.anchor() - objects[i].shape.anchor());
+        neighbours.push_back(f);
+    }
+}
+
+const CameraParams& Scene::neighbour_camera(int which) const
+{
+    return neighbours.empty() ? camera : neighbours[size_t(which)].camera;
+}
+
+Vec3 Scene::neighbour_shift(int which, int object) const
+{
+    return neighbours.empty() ? Vec3(0.0) : neighbours[size_t(which)].shift[size_t(object)];
 }
 
 bool Scene::intersect(const Ray& ray, Hit& hit, double t_max) const

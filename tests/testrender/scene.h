@@ -1,6 +1,7 @@
 // scene.h: a scene is a list of objects (shape + material + object id), the
-// area lights among them, a background colour and a camera; plus the
-// registry of built-in scenes.
+// area lights among them, a background colour and a camera, at one frame of
+// its animation, with where its camera and objects are one frame before and
+// after; plus the registry of built-in scenes.
 #pragma once
 
 #include "camera.h"
@@ -26,15 +27,39 @@ struct LightSample {
     double pdf_area = 0;
 };
 
+/// The camera and the objects at a neighbouring frame (the previous or the
+/// next), relative to the scene's own frame. Objects move by translation only.
+struct NeighbourFrame {
+    CameraParams camera;
+    std::vector<Vec3> shift;  ///< per object: its translation from this frame to that one
+};
+
 struct Scene {
     std::string name;
     std::string description;
     std::vector<Object> objects;
     std::vector<Material> materials;
     Vec3 background { 0, 0, 0 };  ///< radiance of rays that escape
+    /// Camera rays that escape are transparent (alpha 0, no colour) instead
+    /// of seeing the background, which still lights the scene.
+    bool transparent_film = false;
     CameraParams camera;
     int max_depth = 8;       ///< longest path, in bounces
     int roulette_depth = 3;  ///< bounces before Russian roulette starts
+    /// The scene one frame earlier and one frame later. Empty (no motion:
+    /// the camera and every object stay put) unless set by `set_neighbours`.
+    std::vector<NeighbourFrame> neighbours;
+
+    /// Record where the camera and every object are in `previous` and `next`,
+    /// the same scene built one frame before and one frame after (same
+    /// objects in the same order; each may only be translated).
+    void set_neighbours(const Scene& previous, const Scene& next);
+    /// The camera of the previous (`which` = 0) or next (1) frame; this
+    /// frame's camera if the scene has no neighbours.
+    const CameraParams& neighbour_camera(int which) const;
+    /// The translation of object `object` from this frame to the previous
+    /// (`which` = 0) or next (1) frame; 0 if the scene has no neighbours.
+    Vec3 neighbour_shift(int which, int object) const;
 
     int add_material(const Material& m);
     /// Add an object; returns its index. Emitters must be quads (they are
@@ -60,7 +85,8 @@ private:
 
 /// The names of the built-in scenes, in the order `--list` shows them.
 std::vector<std::string> scene_names();
-/// Build the built-in scene `name`; false if there is none by that name.
-bool make_scene(const std::string& name, Scene& scene);
+/// Build the built-in scene `name` at frame `frame` of its animation, with
+/// its neighbour frames; false if there is none by that name.
+bool make_scene(const std::string& name, Scene& scene, int frame = 0);
 
 }  // namespace testrender

@@ -1,48 +1,18 @@
 // scenes.cpp: the built-in scenes. Each exercises something a denoiser must
 // handle: cornell (diffuse, mirror and glossy objects, direct light),
 // mirrors (reflections of distinct objects), textured (high-frequency
-// albedo), dof (defocus over depth), interior (mostly indirect light).
+// albedo), dof (defocus over depth), interior (mostly indirect light),
+// transparent (a transparent film: alpha); the
+// animated shots are in shots.cpp. These stills ignore the frame.
 #include "scene.h"
+#include "scene_parts.h"
+#include "shots.h"
 
 namespace testrender {
 
 namespace {
 
-/// A quad with corner `c` and edges `u`, `v`, oriented so that its normal
-/// points along `facing` (the edges are swapped if needed).
-Shape facing_quad(const Vec3& c, const Vec3& u, const Vec3& v, const Vec3& facing)
-{
-    if (dot(cross(u, v), facing) < 0)
-        return Shape::quad(c, v, u);
-    return Shape::quad(c, u, v);
-}
-
-/// The inside of the axis-aligned box [lo, hi] as five or six walls facing
-/// inwards, ids first_id, first_id+1, ... in the order floor, ceiling,
-/// back (-z), left (-x), right (+x) and, if `closed`, front (+z).
-void add_room(Scene& s, const Vec3& lo, const Vec3& hi, int floor_m, int ceiling_m, int back_m,
-              int left_m, int right_m, int front_m, int first_id, bool closed)
-{
-    const Vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
-    s.add(facing_quad(lo, dx, dz, { 0, 1, 0 }), floor_m, first_id + 0);
-    s.add(facing_quad(Vec3(lo.x, hi.y, lo.z), dx, dz, { 0, -1, 0 }), ceiling_m, first_id + 1);
-    s.add(facing_quad(lo, dx, dy, { 0, 0, 1 }), back_m, first_id + 2);
-    s.add(facing_quad(lo, dy, dz, { 1, 0, 0 }), left_m, first_id + 3);
-    s.add(facing_quad(Vec3(hi.x, lo.y, lo.z), dy, dz, { -1, 0, 0 }), right_m, first_id + 4);
-    if (closed)
-        s.add(facing_quad(Vec3(lo.x, lo.y, hi.z), dx, dy, { 0, 0, -1 }), front_m, first_id + 5);
-}
-
-/// A horizontal area light facing down (or up) centered at `c`.
-void add_panel_light(Scene& s, const Vec3& c, double half_x, double half_z, int material,
-                     int id, bool facing_up = false)
-{
-    s.add(facing_quad(Vec3(c.x - half_x, c.y, c.z - half_z), Vec3(2 * half_x, 0, 0),
-                      Vec3(0, 0, 2 * half_z), Vec3(0, facing_up ? 1 : -1, 0)),
-          material, id);
-}
-
-void cornell(Scene& s)
+void cornell(Scene& s, int /*frame: still*/)
 {
     s.description = "Cornell box: diffuse walls, a diffuse sphere, a mirror sphere, a glossy box";
     const int white = s.add_material(Material::diffuse(Texture::constant({ 0.73, 0.73, 0.73 })));
@@ -65,7 +35,7 @@ void cornell(Scene& s)
     s.max_depth = 8;
 }
 
-void mirrors(Scene& s)
+void mirrors(Scene& s, int /*frame: still*/)
 {
     s.description = "closed room with a mirror sphere and three flat mirrors, each reflecting "
                     "different objects";
@@ -101,7 +71,7 @@ void mirrors(Scene& s)
     s.max_depth = 8;
 }
 
-void textured(Scene& s)
+void textured(Scene& s, int /*frame: still*/)
 {
     s.description = "high-frequency checker floor, noise- and checker-textured objects and a "
                     "glass sphere under a sky";
@@ -131,7 +101,7 @@ void textured(Scene& s)
     s.max_depth = 6;
 }
 
-void dof(Scene& s)
+void dof(Scene& s, int /*frame: still*/)
 {
     s.description = "spheres spread from near to far on a checker floor, thin lens focused on "
                     "the middle one";
@@ -161,7 +131,7 @@ void dof(Scene& s)
     s.max_depth = 6;
 }
 
-void interior(Scene& s)
+void interior(Scene& s, int /*frame: still*/)
 {
     s.description = "room lit by an uplight against the ceiling: almost all light is indirect";
     const int wall = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.72, 0.65 })));
@@ -194,14 +164,47 @@ void interior(Scene& s)
     s.roulette_depth = 4;
 }
 
+void transparent(Scene& s, int /*frame: still*/)
+{
+    s.description = "objects on a floor tile lit only by the sky, transparent film: alpha 0 "
+                    "where the camera sees no geometry";
+    const int tile = s.add_material(
+        Material::diffuse(Texture::checker({ 0.7, 0.7, 0.65 }, { 0.25, 0.25, 0.3 }, 3)));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.15, 0.1 })));
+    const int blue = s.add_material(Material::diffuse(Texture::constant({ 0.15, 0.3, 0.7 })));
+    const int mirror = s.add_material(Material::mirror({ 0.9, 0.9, 0.9 }));
+    // ids: tile 1, red sphere 2, blue box 3, mirror sphere 4
+    s.add(facing_quad({ -1.2, 0, -1.2 }, { 2.4, 0, 0 }, { 0, 0, 2.4 }, { 0, 1, 0 }), tile, 1);
+    s.add(Shape::sphere({ -0.5, 0.4, 0.1 }, 0.4), red, 2);
+    s.add(Shape::box({ 0.55, 0.35, -0.35 }, { 0.3, 0.35, 0.3 }, 30), blue, 3);
+    s.add(Shape::sphere({ 0.45, 0.25, 0.6 }, 0.25), mirror, 4);
+    // no light and only diffuse and mirror surfaces (weights <= 1): every
+    // sample's radiance is at most the sky's, below 1, so colour <= alpha
+    s.background = { 0.8, 0.85, 0.9 };
+    s.transparent_film = true;
+    s.camera.eye = { 0, 1.8, 3.4 };
+    s.camera.look_at = { 0, 0.2, 0 };
+    s.camera.vfov_degrees = 45;
+    s.max_depth = 6;
+}
+
 struct Entry {
     const char* name;
-    void (*build)(Scene&);
+    void (*build)(Scene&, int frame);
 };
 
-const Entry scenes[] = { { "cornell", cornell },   { "mirrors", mirrors },
-                         { "textured", textured }, { "dof", dof },
-                         { "interior", interior } };
+const Entry scenes[] = { { "cornell", cornell },         { "mirrors", mirrors },
+                         { "textured", textured },       { "dof", dof },
+                         { "interior", interior },       { "transparent", transparent },
+                         { "shot_static", shot_static },
+                         { "shot_truck", shot_truck },   { "shot_object", shot_object } };
+
+void build(const Entry& e, int frame, Scene& scene)
+{
+    scene = Scene();
+    scene.name = e.name;
+    e.build(scene, frame);
+}
 
 }  // namespace
 
@@ -213,13 +216,15 @@ std::vector<std::string> scene_names()
     return names;
 }
 
-bool make_scene(const std::string& name, Scene& scene)
+bool make_scene(const std::string& name, Scene& scene, int frame)
 {
     for (const Entry& e : scenes) {
         if (name == e.name) {
-            scene = Scene();
-            scene.name = e.name;
-            e.build(scene);
+            Scene previous, next;
+            build(e, frame - 1, previous);
+            build(e, frame + 1, next);
+            build(e, frame, scene);
+            scene.set_neighbours(previous, next);
             return true;
         }
     }

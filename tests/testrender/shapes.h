@@ -46,6 +46,11 @@ struct Shape {
 
     /// Fill position, normal, u, v of the hit at distance `t` along `ray`.
     void surface(const Ray& ray, double t, Hit& hit) const;
+
+    /// The point the shape is placed by (a sphere's or box's center, a
+    /// quad's corner): a point's position relative to it is its object-space
+    /// position, which a translation of the shape leaves unchanged.
+    Vec3 anchor() const { return kind == ShapeKind::quad ? corner : center; }
 };
 
 }  // namespace testrender

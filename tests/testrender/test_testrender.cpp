@@ -251,12 +251,13 @@ TEST(TestRenderOutput, ChannelsAndMetadata)
     ASSERT_TRUE(in.read(0, 0, true, OIIO::TypeDesc::FLOAT)) << in.geterror();
     const OIIO::ImageSpec& spec = in.spec();
     EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
-    EXPECT_EQ(spec.nchannels, 21);
-    for (const std::string& name : channel_names())
+    EXPECT_EQ(spec.nchannels, 25);
+    for (const std::string& name : channel_names(b))
         EXPECT_GE(spec.channelindex(name), 0) << name;
     EXPECT_EQ(spec.get_string_attribute("testrender:scene"), "cornell");
     EXPECT_EQ(spec.get_int_attribute("testrender:spp"), 2);
     EXPECT_EQ(spec.get_int_attribute("testrender:seed"), 5);
+    EXPECT_EQ(spec.get_int_attribute("testrender:frame", -1), 0);
     EXPECT_GE(spec.get_float_attribute("testrender:render_seconds", -1), 0.0f);
     EXPECT_GT(spec.get_float_attribute("testrender:samples_per_second", -1), 0.0f);
     // the file holds exactly the buffers
