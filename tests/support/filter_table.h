@@ -14,7 +14,7 @@ namespace testfilters {
 using OIIO::ImageBuf;
 using OIIO::ROI;
 
-/// The guide images a filter may read, by role (SPEC.md's argument order).
+/// The guide images a filter may read, by role (the library's argument order).
 struct GuideSet {
     ImageBuf object_id, reflect_id, normal, depth, albedo, variance;
 };
