@@ -2,9 +2,10 @@
 // variance-guided luminance weight.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Edge-avoiding a-trous wavelet filter (Dammertz et al. 2010,
 /// "Edge-Avoiding A-Trous Wavelet Transform for fast Global Illumination

@@ -3,9 +3,10 @@
 // object, so reflections stay sharp.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// BRDF mean. If the center is specular (`reflect_id` >= 0: the id of the
 /// object its mirror-reflection ray hit), a neighbour is viable when it has

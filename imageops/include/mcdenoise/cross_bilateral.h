@@ -2,9 +2,10 @@
 // features of features.h and, optionally, the beauty's own colour.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Joint / cross bilateral filter (Eisemann & Durand 2004, "Flash
 /// Photography Enhancement via Intrinsic Relighting"; Petschnigg et al.

@@ -2,9 +2,10 @@
 // before filtering and multiply it back after, so a filter never blurs it.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Albedo demodulation (Zimmer et al. 2015; Bako et al. 2017's "diffuse
 /// irradiance"; SVGF, Schied et al. 2017): every colour channel becomes

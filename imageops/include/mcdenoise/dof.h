@@ -2,9 +2,10 @@
 // grows with the distance of a pixel's depth level from the level in focus.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// The window side the `dof` filter uses at each pixel of `roi`, as a one
 /// channel float image (the report's "focus map"). The depths' range is

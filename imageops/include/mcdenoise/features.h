@@ -4,9 +4,10 @@
 // nlmeans.h.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// The auxiliary buffers a feature-guided filter may use. Any may be absent
 /// (nullptr); each present one must cover the ROI (data windows) with the

@@ -2,9 +2,10 @@
 // dominate the error of a Monte Carlo render, before any averaging.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Firefly clamp, the outlier pass of the feature-guided denoisers (as in
 /// Cycles' NLM denoiser after Rousselle, Manzi & Zwicker 2013): a pixel far

@@ -2,9 +2,10 @@
 // feature weights.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Non-local means with variance-normalised patch distances (Rousselle,
 /// Knaus & Zwicker 2012, "Adaptive Rendering with Non-Local Means

@@ -2,9 +2,10 @@
 // neighbour by how closely its surface normal matches the center's.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Normal mean: over the neighbours with the center's object id, the mean
 /// weighted by max(0, dot(n_p, n_q)) of the normalised normals (`normal`,

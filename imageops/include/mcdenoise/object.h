@@ -2,9 +2,10 @@
 // pixel with neighbours of the same object, so edges between objects stay.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Object mean: the mean of the finite values of the neighbours that share
 /// the center's object id (one channel, compared as integers after

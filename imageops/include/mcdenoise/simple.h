@@ -2,9 +2,11 @@
 // box mean, median and binomial ("Pascal's triangle") gaussian.
 #pragma once
 
+#include <mcdenoise/export.h>
+
 #include <OpenImageIO/imagebuf.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 using OIIO::ImageBuf;
 using OIIO::ROI;
