@@ -29,7 +29,8 @@ enum GuideBit : unsigned {
     needs_variance = 1u << 5,
 };
 
-/// A filter's bool form with the shared parameters: `size` is the window
+/// A filter's bool form with the shared parameters (the others at the
+/// header's named defaults): `size` is the window
 /// side; for `dof` the level count (focus at the middle level, so its
 /// widest window is `size` too); for `atrous` twice the iteration count,
 /// for `nlmeans` and `clamp_fireflies` twice the (search) radius; unused by

@@ -32,6 +32,7 @@
 #include <mcdenoise/atrous.h>
 #include <mcdenoise/brdf.h>
 #include <mcdenoise/cross_bilateral.h>
+#include <mcdenoise/defaults.h>
 #include <mcdenoise/demodulate.h>
 #include <mcdenoise/denoise.h>
 #include <mcdenoise/dof.h>
