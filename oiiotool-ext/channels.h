@@ -6,6 +6,7 @@
 // and explicit selectors (a comma list of channel names or a layer prefix).
 #pragma once
 
+#include "channel_names.h"
 #include "roles.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -18,23 +19,6 @@
 namespace mcdtool {
 
 using OIIO::ImageBuf;
-using OIIO::ImageSpec;
-
-/// A channel name taken apart: "<layer>.<pass>.<component>".
-struct ChannelName {
-    std::string layer;
-    std::string pass;
-    std::string component;
-};
-
-/// Splits a channel name. "R" -> ("", "", "R"); "Z" -> ("", "Z", "Z");
-/// "N.X" -> ("", "N", "X"); "ViewLayer.Denoising Normal.X" ->
-/// ("ViewLayer", "Denoising Normal", "X").
-ChannelName split_name(const std::string& name);
-
-/// The spec of channels `indices` of an image of spec `from`, as float:
-/// its windows and metadata, those channels' names, alpha and depth.
-ImageSpec extracted_spec(const ImageSpec& from, const std::vector<int>& indices);
 
 /// What discovery found in one image's channel list.
 struct Discovery {
@@ -58,11 +42,5 @@ Discovery discover_channels(const ImageSpec& spec, std::string_view beauty_selec
 
 /// A float image holding channels `indices` of `src`, in that order.
 ImageBuf extract_channels(const ImageBuf& src, const std::vector<int>& indices);
-
-/// "N.X,N.Y,N.Z": the names of `indices`.
-std::string channel_names(const ImageSpec& spec, const std::vector<int>& indices);
-
-/// "R,G,B,...": every channel of `spec`, for error messages.
-std::string all_channel_names(const ImageSpec& spec);
 
 }  // namespace mcdtool

@@ -8,6 +8,8 @@
 
 namespace mcdtool {
 
+using OIIO::Strutil::fmt::format;
+
 int Call::integer(size_t i) const { return OIIO::Strutil::stoi(values.at(i)); }
 
 float Call::number(size_t i) const { return OIIO::Strutil::stof(values.at(i)); }
@@ -136,7 +138,8 @@ const std::vector<Command>& command_table()
           "mcdtool render.exr --dof 10 0 -o out.exr",
           [](const Call& c) {
               return mcdenoise::dof(c.dst, c.beauty, c.guide(Role::id), c.guide(Role::depth), c.integer(0),
-                                    c.integer(1), 0.0f, 0.0f, {}, c.nthreads);
+                                    c.integer(1), mcdenoise::dof_image_depth_range,
+                                    mcdenoise::dof_image_depth_range, {}, c.nthreads);
           } },
         { "dof-range", "dof", "dof.h", { levels_param, focus_param, near_param, far_param }, { Role::id, Role::depth },
           "As --dof, with the levels spread over the depths [NEAR, FAR] instead of the image's range.",
@@ -146,12 +149,15 @@ const std::vector<Command>& command_table()
                                     c.integer(1), c.number(2), c.number(3), {}, c.nthreads);
           } },
         { "cross-bilateral", "cross_bilateral", "cross_bilateral.h", { size_param }, {},
-          "Joint bilateral filter: spatial gaussian (sigma 2) times the feature weight of the guides "
-          "present (id: hard edge; normal, depth, albedo: gaussian falloff).",
+          format("Joint bilateral filter: spatial gaussian (sigma {}) times the feature weight of the "
+                 "guides present (id: hard edge; normal, depth, albedo: gaussian falloff).",
+                 mcdenoise::default_cross_bilateral_sigma_spatial),
           "mcdtool render.exr --cross-bilateral 7 -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::cross_bilateral(c.dst, c.beauty, feature_guides(c), c.integer(0), 2.0f, 0.0f, {},
-                                                {}, c.nthreads);
+              return mcdenoise::cross_bilateral(c.dst, c.beauty, feature_guides(c), c.integer(0),
+                                                mcdenoise::default_cross_bilateral_sigma_spatial,
+                                                mcdenoise::default_cross_bilateral_sigma_color, {}, {},
+                                                c.nthreads);
           },
           feature_roles },
         { "atrous", "atrous", "atrous.h", { iterations_param }, {},
@@ -159,16 +165,19 @@ const std::vector<Command>& command_table()
           "estimated from the beauty when no variance guide is present) and the feature weight.",
           "mcdtool render.exr --demodulate --atrous 5 --remodulate -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::atrous(c.dst, c.beauty, feature_guides(c), c.integer(0), 4.0f, {}, {}, c.nthreads);
+              return mcdenoise::atrous(c.dst, c.beauty, feature_guides(c), c.integer(0),
+                                       mcdenoise::default_atrous_sigma_luminance, {}, {}, c.nthreads);
           },
           feature_and_variance_roles },
         { "nlmeans", "nlmeans", "nlmeans.h", { search_param }, {},
-          "Non-local means with variance-normalised 3x3 patch distances (strength 0.45) and the "
-          "feature weight.",
+          format("Non-local means with variance-normalised {0}x{0} patch distances (strength {1}) and "
+                 "the feature weight.",
+                 2 * mcdenoise::default_nlmeans_patch_radius + 1, mcdenoise::default_nlmeans_strength),
           "mcdtool render.exr --nlmeans 7 -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::nlmeans(c.dst, c.beauty, feature_guides(c), c.integer(0), 1, 0.45f, {}, {},
-                                        c.nthreads);
+              return mcdenoise::nlmeans(c.dst, c.beauty, feature_guides(c), c.integer(0),
+                                        mcdenoise::default_nlmeans_patch_radius,
+                                        mcdenoise::default_nlmeans_strength, {}, {}, c.nthreads);
           },
           feature_and_variance_roles },
         { "denoise", "denoise", "denoise.h", {}, {},
@@ -178,25 +187,31 @@ const std::vector<Command>& command_table()
           [](const Call& c) { return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads); },
           denoise_roles },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
-          "Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their 5x5 "
-          "neighbours (of the same object when an id guide is present).",
+          format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
+                 "{0}x{0} neighbours (of the same object when an id guide is present).",
+                 2 * mcdenoise::default_firefly_radius + 1),
           "mcdtool render.exr --clamp-fireflies 2 --object-median 7 -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::clamp_fireflies(c.dst, c.beauty, feature_guides(c), c.number(0), 2, {}, c.nthreads);
+              return mcdenoise::clamp_fireflies(c.dst, c.beauty, feature_guides(c), c.number(0),
+                                                mcdenoise::default_firefly_radius, {}, c.nthreads);
           },
           { Role::id } },
         { "demodulate", "demodulate", "demodulate.h", {}, { Role::albedo },
-          "Divide the colour channels by albedo + 0.01 so the next filters do not blur texture; undo "
-          "with --remodulate.",
+          format("Divide the colour channels by albedo + {} so the next filters do not blur texture; "
+                 "undo with --remodulate.",
+                 mcdenoise::default_demodulate_epsilon),
           "mcdtool render.exr --demodulate --nlmeans 7 --remodulate -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::demodulate(c.dst, c.beauty, c.guide(Role::albedo), 0.01f, {}, c.nthreads);
+              return mcdenoise::demodulate(c.dst, c.beauty, c.guide(Role::albedo),
+                                           mcdenoise::default_demodulate_epsilon, {}, c.nthreads);
           } },
         { "remodulate", "remodulate", "demodulate.h", {}, { Role::albedo },
-          "Multiply the colour channels by albedo + 0.01: the inverse of --demodulate.",
+          format("Multiply the colour channels by albedo + {}: the inverse of --demodulate.",
+                 mcdenoise::default_demodulate_epsilon),
           "mcdtool render.exr --demodulate --cross-bilateral 7 --remodulate -o clean.exr",
           [](const Call& c) {
-              return mcdenoise::remodulate(c.dst, c.beauty, c.guide(Role::albedo), 0.01f, {}, c.nthreads);
+              return mcdenoise::remodulate(c.dst, c.beauty, c.guide(Role::albedo),
+                                           mcdenoise::default_demodulate_epsilon, {}, c.nthreads);
           } },
     };
     return table;

@@ -61,7 +61,7 @@ struct Command {
     const char* header;            ///< the library header that declares it
     std::vector<Param> params;
     std::vector<Role> roles;       ///< guides it needs, in argument order
-    const char* help;
+    std::string help;              ///< one paragraph; numbers come from the library's defaults
     const char* example;           ///< a full mcdtool command line
     CallFn call;
     std::vector<Role> optional_roles = {};  ///< guides it uses when present

@@ -37,21 +37,21 @@ std::string metrics_text(const mcdenoise::ImageComparison& m)
 
 }  // namespace
 
-ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files)
+ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files)
 {
     const ImageBuf& reference = files.get(path, "--compare");
-    Discovery found = discover_channels(reference.spec(), options.beauty_channels, path);
+    Discovery found = discover_channels(reference.spec(), beauty_channels, path);
     return extract_channels(reference, found.beauty);
 }
 
 void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
-                      const ImageBuf& reference, const Options& options)
+                      const ImageBuf& reference, int nthreads)
 {
     if (reference.nchannels() != after.nchannels())
         throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the result has {}", path,
                               reference.nchannels(), after.nchannels()));
-    std::string input_metrics = metrics_text(measure(before, reference, options.threads));
-    std::string result_metrics = metrics_text(measure(after, reference, options.threads));
+    std::string input_metrics = metrics_text(measure(before, reference, nthreads));
+    std::string result_metrics = metrics_text(measure(after, reference, nthreads));
     std::printf("mcdtool: compare %s\n  input   %s\n  result  %s\n", path.c_str(), input_metrics.c_str(),
                 result_metrics.c_str());
 }

@@ -4,21 +4,23 @@
 #pragma once
 
 #include "input.h"
-#include "options.h"
 
 #include <OpenImageIO/imagebuf.h>
 
 #include <string>
+#include <string_view>
 
 namespace mcdtool {
 
 /// The reference's beauty channels (discovered like the input's, or chosen
-/// by --beauty), as float. Throws RunError naming `path`.
-ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files);
+/// by `beauty_channels`, --beauty, when not empty), as float. Throws
+/// RunError naming `path`.
+ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files);
 
 /// Prints the metrics of `before` and `after` against `reference` on
-/// stdout. Throws RunError "--compare : <library message>".
+/// stdout, computed on `nthreads` threads (0: all). Throws RunError
+/// "--compare : <library message>".
 void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
-                      const ImageBuf& reference, const Options& options);
+                      const ImageBuf& reference, int nthreads);
 
 }  // namespace mcdtool

@@ -2,7 +2,7 @@
 // rank-0 object id channel, and hashes turned into whole-number ids.
 #include "cryptomatte.h"
 
-#include "channels.h"
+#include "channel_names.h"
 
 #include <OpenImageIO/strutil.h>
 
@@ -78,13 +78,15 @@ int find_cryptomatte_object_ids(const OIIO::ImageSpec& spec, const std::string& 
 
 OIIO::ImageBuf cryptomatte_ids(const OIIO::ImageBuf& src, int c)
 {
-    const OIIO::ImageBuf hashes = extract_channels(src, { c });
-    OIIO::ImageSpec spec        = hashes.spec();
+    OIIO::ImageSpec spec = extracted_spec(src.spec(), { c });
     spec.set_format(OIIO::TypeUInt32);
     const size_t n = size_t(spec.image_pixels());
     std::vector<float> values(n);
     std::vector<uint32_t> ids(n);
-    hashes.get_pixels(hashes.roi(), OIIO::TypeFloat, values.data());
+    OIIO::ROI channel = src.roi();
+    channel.chbegin   = c;
+    channel.chend     = c + 1;
+    src.get_pixels(channel, OIIO::TypeFloat, values.data());
     std::memcpy(ids.data(), values.data(), n * sizeof(float));
     OIIO::ImageBuf out(spec, OIIO::InitializePixels::No);
     out.set_pixels(out.roi(), OIIO::TypeUInt32, ids.data());

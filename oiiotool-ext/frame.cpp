@@ -97,14 +97,15 @@ uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides
     return float_bytes(input.spec().image_pixels(), channels);
 }
 
-/// Runs one command: exactly one library call, timed, errors forwarded.
-ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, const Options& options,
+/// Runs one command on `nthreads` threads: exactly one library call, timed,
+/// errors forwarded; with `verbose`, its time is printed.
+ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, int nthreads, bool verbose,
                      RunStats& stats)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, options.threads };
+    Call call{ dst, current, guides, step.values, nthreads };
     Timer timer;
     bool ok = command.call(call);
     double seconds = timer.seconds();
@@ -115,7 +116,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     if (empty > 0)
         std::fprintf(stderr, "mcdtool WARNING: %s : %d window(s) held no finite value and were set to 0\n",
                      name.c_str(), empty);
-    if (options.verbose)
+    if (verbose)
         std::printf("mcdtool: %s %s  %.3f s\n", name.c_str(), OIIO::Strutil::join(step.values, " ").c_str(),
                     seconds);
     return dst;
@@ -149,7 +150,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     OutputBatch batch(stats);
     for (const Step& step : options.steps) {
         if (step.command) {
-            current = run_command(step, current, guides, options, stats);
+            current = run_command(step, current, guides, options.threads, options.verbose, stats);
             continue;
         }
         std::string path = path_of(step.output);
@@ -162,8 +163,8 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     ImageBuf reference;
     if (!options.compare.empty()) {
         std::string reference_path = path_of(options.compare);
-        reference = reference_beauty(reference_path, options, files);
-        print_comparison(reference_path, before, current, reference, options);
+        reference = reference_beauty(reference_path, options.beauty_channels, files);
+        print_comparison(reference_path, before, current, reference, options.threads);
     }
     if (!options.preview.empty()) {
         write_preview(path_of(options.preview), before, current,

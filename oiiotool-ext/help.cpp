@@ -157,7 +157,7 @@ std::string help_markdown()
     md += format("{}\n\n```\nmcdtool INPUT [COMMAND ARGS | OPTION]... -o OUTPUT\n```\n\n", summary);
     md += "It reads like oiiotool: the input, then commands applied left to right to the beauty "
           "channels, `-o` writes the current result. Each command is exactly one call into "
-          "libmcdenoise (see SPEC.md for the filters' semantics). The output keeps every input "
+          "libmcdenoise (docs/filters.md has each filter's exact rule). The output keeps every input "
           "channel and the input's metadata with only the beauty channels replaced, in the input's "
           "pixel types and compression unless `-d` or `--compression` say otherwise. Files are "
           "written to a temp file beside the target and renamed into place once the whole frame "

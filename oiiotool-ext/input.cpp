@@ -1,7 +1,7 @@
 // input.cpp: image reading with errors that name the file.
 #include "input.h"
 
-#include "channels.h"
+#include "channel_names.h"
 
 #include "error.h"
 #include "memory_limit.h"

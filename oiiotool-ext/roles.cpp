@@ -7,8 +7,8 @@ namespace mcdtool {
 
 const std::vector<RoleInfo>& role_table()
 {
-    // Pass names: testrender's first, then Blender Cycles' (DESIGN.md and
-    // RENDERS.md), then those of RenderMan's denoise AOVs (zfiltered; mse,
+    // Pass names: testrender's first, then Blender Cycles' (its multilayer
+    // EXR pass names: IndexOB, Normal, Depth and the Denoising passes), then those of RenderMan's denoise AOVs (zfiltered; mse,
     // the variance of the pixel's mean) and Arnold's (denoise_albedo, and
     // diffuse_albedo before Arnold 6); matching ignores case and looks only
     // in the beauty's view layer.

@@ -1,4 +1,4 @@
-// roles.h: the guide roles (DESIGN.md, "Guide roles"): the one vocabulary
+// roles.h: the guide roles (docs/filters.md, "Guide roles"): the one vocabulary
 // shared by --aov ROLE=..., the command table and the C++ argument names.
 #pragma once
 
@@ -23,7 +23,7 @@ struct RoleInfo {
     std::vector<const char*> pass_names;  ///< names to look for, preferred first
 };
 
-/// Every role, in the order of DESIGN.md's table.
+/// Every role, in the order of docs/filters.md's guide roles table.
 const std::vector<RoleInfo>& role_table();
 
 /// The entry for `role`.

@@ -1,5 +1,5 @@
 // test_guided_filters.cpp: the object, BRDF and normal filters against the
-// tests' brute-force implementation of SPEC.md's rules, on random beauty with
+// tests' brute-force implementation of docs/filters.md's rules, on random beauty with
 // structured guides stored in several pixel types, with non-finite values,
 // odd data windows; and their error checks (thread counts and ROI splits:
 // test_determinism.cpp).
@@ -26,7 +26,7 @@ using OIIO::ImageBuf;
 using OIIO::ROI;
 using OIIO::TypeDesc;
 
-// The guides of one test image, and SPEC.md's reading of them.
+// The guides of one test image, and docs/filters.md's reading of them.
 struct Guides {
     ImageBuf ids, reflect, normals;
 };
@@ -44,7 +44,7 @@ struct SpecGuides {
         const double v = reflect.at(x, y, 0);
         return std::isnan(v) || v < 0 ? -1 : int64_t(std::nearbyint(v));
     }
-    // max(0, dot) of normalised normals; missing (zero) normals per SPEC.md.
+    // max(0, dot) of normalised normals; missing (zero) normals per docs/filters.md.
     double normal_weight(int px, int py, int qx, int qy) const
     {
         double a[3], b[3], la = 0, lb = 0;
@@ -170,7 +170,7 @@ void expect_matches_spec(const GuidedFilter& f, const ImageBuf& beauty, const Gu
         const double tol = median ? 0.0 : 2e-6 * std::max(1.0, std::abs(want[i]));
         if (std::abs(double(got[i]) - expected) > tol) {
             ADD_FAILURE() << f.name << " size " << size << " value " << i << ": got " << got[i]
-                          << ", SPEC.md says " << want[i];
+                          << ", docs/filters.md says " << want[i];
             ++reported;
         }
     }

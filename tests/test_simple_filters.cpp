@@ -1,5 +1,5 @@
 // test_simple_filters.cpp: mean, median and gaussian against the tests'
-// brute-force implementation of SPEC.md, on random images of many shapes,
+// brute-force implementation of docs/filters.md, on random images of many shapes,
 // pixel types and data windows, with non-finite values (thread counts and
 // ROI splits: test_determinism.cpp).
 #include <mcdenoise/mcdenoise.h>
@@ -65,7 +65,7 @@ void expect_matches_spec(const SimpleFilter& f, const ImageBuf& img, int size,
                                                                  : want[i];
         if (std::abs(double(got[i]) - expected) > tol) {
             ADD_FAILURE() << f.name << " size " << size << " value " << i << ": got "
-                          << got[i] << ", SPEC.md says " << want[i];
+                          << got[i] << ", docs/filters.md says " << want[i];
             ++reported;
         }
     }

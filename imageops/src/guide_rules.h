@@ -1,4 +1,4 @@
-// guide_rules.h: the viability rules of the guided filters (SPEC.md), each
+// guide_rules.h: the viability rules of the guided filters (docs/filters.md), each
 // with the map of windows it makes wholly viable (the fast path), found
 // exactly from where the keys (ids) change between neighbouring pixels.
 #pragma once

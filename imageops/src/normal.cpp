@@ -27,7 +27,7 @@ bool same_normal(const UnitNormal& a, const UnitNormal& b)
     return (a.x == b.x) & (a.y == b.y) & (a.z == b.z);
 }
 
-// SPEC.md's normal weight: max(0, dot) of unit normals; 1 when both are
+// The normal weight of docs/filters.md: max(0, dot) of unit normals; 1 when both are
 // missing, 0 when one is. Identical normals weigh exactly 1, which also
 // covers two missing (all-zero) normals; one missing gives a zero dot.
 float normal_weight(const UnitNormal& a, const UnitNormal& b)

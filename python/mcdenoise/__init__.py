@@ -1,7 +1,7 @@
 """mcdenoise: Monte Carlo render denoising on OpenImageIO, from Python.
 
 Every filter and metric of libmcdenoise, with the library's names, argument
-names, defaults and doc comments (see SPEC.md and the C++ headers):
+names, defaults and doc comments (see docs/filters.md and the C++ headers):
 
     import OpenImageIO as oiio, mcdenoise
     beauty = oiio.ImageBuf("render.exr")          # or a numpy array (H, W, C)

@@ -1,5 +1,7 @@
-// module.cpp: the compiled module mcdenoise._mcdenoise: the library's filters
-// and metrics, mcdtool's frame runner, and the exceptions they raise.
+// module.cpp: the compiled module mcdenoise._mcdenoise: the library's filters,
+// metrics and named defaults, mcdtool's frame runner, and the exceptions they
+// raise.
+#include "defaults.h"
 #include "driver.h"
 #include "operation.h"
 #include "operations.h"
@@ -93,5 +95,6 @@ PYBIND11_MODULE(_mcdenoise, m)
     mcdpy::bind_comparison(m);
     mcdpy::bind_feature_sigmas(m);
     mcdpy::bind_operations(m);
+    mcdpy::bind_defaults(m);
     mcdpy::bind_driver(m);
 }

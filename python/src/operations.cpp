@@ -1,6 +1,6 @@
 // operations.cpp: the table of bound library operations. Exposing a filter
 // is one entry: its name, its value form, and its arguments after the
-// beauty with the header's defaults (roi and nthreads are added). The
+// beauty with the header's named defaults (roi and nthreads are added). The
 // classes the arguments and results use (ImageComparison, FeatureSigmas)
 // are bound first, in module.cpp.
 #include "operations.h"
@@ -16,38 +16,49 @@ using py::arg;
 
 void bind_operations(py::module_& m)
 {
-    def_operation(m, "mean", mcd::mean, arg("beauty"), arg("size") = 3);
-    def_operation(m, "median", mcd::median, arg("beauty"), arg("size") = 3);
-    def_operation(m, "gaussian", mcd::gaussian, arg("beauty"), arg("size") = 3);
-    def_operation(m, "object_mean", mcd::object_mean, arg("beauty"), arg("object_id"), arg("size") = 3);
-    def_operation(m, "object_median", mcd::object_median, arg("beauty"), arg("object_id"), arg("size") = 3);
-    def_operation(m, "object_gaussian", mcd::object_gaussian, arg("beauty"), arg("object_id"), arg("size") = 3);
+    const int size = mcd::default_window_size;
+    def_operation(m, "mean", mcd::mean, arg("beauty"), arg("size") = size);
+    def_operation(m, "median", mcd::median, arg("beauty"), arg("size") = size);
+    def_operation(m, "gaussian", mcd::gaussian, arg("beauty"), arg("size") = size);
+    def_operation(m, "object_mean", mcd::object_mean, arg("beauty"), arg("object_id"), arg("size") = size);
+    def_operation(m, "object_median", mcd::object_median, arg("beauty"), arg("object_id"), arg("size") = size);
+    def_operation(m, "object_gaussian", mcd::object_gaussian, arg("beauty"), arg("object_id"), arg("size") = size);
     def_operation(m, "brdf_mean", mcd::brdf_mean, arg("beauty"), arg("object_id"), arg("reflect_id"),
-                  arg("size") = 3);
+                  arg("size") = size);
     def_operation(m, "brdf_gaussian", mcd::brdf_gaussian, arg("beauty"), arg("object_id"), arg("reflect_id"),
-                  arg("size") = 3);
+                  arg("size") = size);
     def_operation(m, "brdf_median", mcd::brdf_median, arg("beauty"), arg("object_id"), arg("reflect_id"),
-                  arg("size") = 3);
+                  arg("size") = size);
     def_operation(m, "normal_mean", mcd::normal_mean, arg("beauty"), arg("object_id"), arg("normal"),
-                  arg("size") = 3);
+                  arg("size") = size);
     def_operation(m, "normal_gaussian", mcd::normal_gaussian, arg("beauty"), arg("object_id"), arg("normal"),
-                  arg("size") = 3);
+                  arg("size") = size);
     def_operation(m, "dof_focus_map", mcd::dof_focus_map, arg("depth"), arg("levels"), arg("focus_level"),
-                  arg("depth_near") = 0.0f, arg("depth_far") = 0.0f);
+                  arg("depth_near") = mcd::dof_image_depth_range, arg("depth_far") = mcd::dof_image_depth_range);
     def_operation(m, "dof", mcd::dof, arg("beauty"), arg("object_id"), arg("depth"), arg("levels"),
-                  arg("focus_level"), arg("depth_near") = 0.0f, arg("depth_far") = 0.0f);
+                  arg("focus_level"), arg("depth_near") = mcd::dof_image_depth_range,
+                  arg("depth_far") = mcd::dof_image_depth_range);
 
-    def_operation(m, "cross_bilateral", mcd::cross_bilateral, arg("beauty"), arg("guides"), arg("size") = 7,
-                  arg("sigma_spatial") = 2.0f, arg("sigma_color") = 0.0f, arg("sigmas") = mcd::FeatureSigmas());
-    def_operation(m, "atrous", mcd::atrous, arg("beauty"), arg("guides"), arg("iterations") = 5,
-                  arg("sigma_luminance") = 4.0f, arg("sigmas") = mcd::FeatureSigmas());
-    def_operation(m, "nlmeans", mcd::nlmeans, arg("beauty"), arg("guides"), arg("search_radius") = 7,
-                  arg("patch_radius") = 1, arg("strength") = 0.45f, arg("sigmas") = mcd::FeatureSigmas());
-    def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"), arg("factor") = 2.0f,
-                  arg("radius") = 2);
+    def_operation(m, "cross_bilateral", mcd::cross_bilateral, arg("beauty"), arg("guides"),
+                  arg("size") = mcd::default_cross_bilateral_size,
+                  arg("sigma_spatial") = mcd::default_cross_bilateral_sigma_spatial,
+                  arg("sigma_color") = mcd::default_cross_bilateral_sigma_color,
+                  arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "atrous", mcd::atrous, arg("beauty"), arg("guides"),
+                  arg("iterations") = mcd::default_atrous_iterations,
+                  arg("sigma_luminance") = mcd::default_atrous_sigma_luminance,
+                  arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "nlmeans", mcd::nlmeans, arg("beauty"), arg("guides"),
+                  arg("search_radius") = mcd::default_nlmeans_search_radius,
+                  arg("patch_radius") = mcd::default_nlmeans_patch_radius,
+                  arg("strength") = mcd::default_nlmeans_strength, arg("sigmas") = mcd::FeatureSigmas());
+    def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"),
+                  arg("factor") = mcd::default_firefly_factor, arg("radius") = mcd::default_firefly_radius);
     def_operation(m, "denoise", mcd::denoise, arg("beauty"), arg("guides") = py::none());
-    def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"), arg("epsilon") = 0.01f);
-    def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"), arg("epsilon") = 0.01f);
+    def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"),
+                  arg("epsilon") = mcd::default_demodulate_epsilon);
+    def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"),
+                  arg("epsilon") = mcd::default_demodulate_epsilon);
 
     def_operation(m, "compare_images", mcd::compare_images, arg("result"), arg("reference"));
     def_operation(m, "rel_mse", mcd::rel_mse, arg("result"), arg("reference"));

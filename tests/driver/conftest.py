@@ -128,7 +128,7 @@ def cycles_exr(tmp_path):
 
 
 def median_reference(img, size):
-    """Per-channel median over windows clipped to the image (SPEC.md)."""
+    """Per-channel median over windows clipped to the image (docs/filters.md)."""
     r = size // 2
     h, w, _ = img.shape
     out = np.empty_like(img)
@@ -141,7 +141,7 @@ def median_reference(img, size):
 
 def gaussian_reference(img, size):
     """Binomial weighted mean over clipped windows, normalised by the
-    weights that contributed (SPEC.md)."""
+    weights that contributed (docs/filters.md)."""
     from math import comb
     r = size // 2
     taps = np.array([comb(size - 1, i) for i in range(size)], np.float64)

@@ -38,7 +38,7 @@ def test_median_gaussian_chain(testrender_exr, tmp_path):
 
 
 def object_median_reference(img, ids, size):
-    """Median over the clipped window's pixels with the center's id (SPEC.md)."""
+    """Median over the clipped window's pixels with the center's id (docs/filters.md)."""
     r = size // 2
     h, w, c = img.shape
     out = np.empty_like(img)

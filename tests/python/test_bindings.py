@@ -104,9 +104,10 @@ def test_argument_names_and_defaults_are_the_librarys():
     for part in ("object_id: ", "depth: ", "levels: int", "focus_level: int", "depth_near: float = 0.0",
                  "depth_far: float = 0.0", "roi: OpenImageIO.ROI = ROI.All", "nthreads: int = 0"):
         assert part in signature, (part, signature)
-    assert "size: int = 3" in mcdenoise.object_median.__doc__.splitlines()[0]
+    assert f"size: int = {mcdenoise.default_window_size}" in mcdenoise.object_median.__doc__.splitlines()[0]
     image = random_image((9, 11, 3), 1)
-    assert np.array_equal(mcdenoise.median(image), mcdenoise.median(beauty=image, size=3, nthreads=1))
+    assert np.array_equal(mcdenoise.median(image),
+                          mcdenoise.median(beauty=image, size=mcdenoise.default_window_size, nthreads=1))
     with pytest.raises(TypeError):
         mcdenoise.median(image, width=3)
 
@@ -173,8 +174,9 @@ def test_feature_guided_filters_take_a_guides_dict(sequence):
         mcdenoise.atrous(beauty, {"normals": guides["normal"]})
     with pytest.raises(TypeError, match="'depth' must be"):
         mcdenoise.atrous(beauty, {"depth": "Z"})
-    demodulated = mcdenoise.demodulate(beauty, guides["albedo"], epsilon=0.01)
-    remodulated = mcdenoise.remodulate(demodulated, guides["albedo"], epsilon=0.01)
+    epsilon = mcdenoise.default_demodulate_epsilon
+    demodulated = mcdenoise.demodulate(beauty, guides["albedo"], epsilon=epsilon)
+    remodulated = mcdenoise.remodulate(demodulated, guides["albedo"], epsilon=epsilon)
     assert np.allclose(remodulated, beauty, rtol=1e-5, atol=1e-6)
 
 

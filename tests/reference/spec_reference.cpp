@@ -1,4 +1,4 @@
-// spec_reference.cpp: the tests' brute-force implementation of SPEC.md.
+// spec_reference.cpp: the tests' brute-force implementation of docs/filters.md.
 #include "spec_reference.h"
 
 #include <algorithm>
@@ -66,7 +66,7 @@ double median_of(std::vector<double> v)
     const size_t n = v.size();
     if (n % 2 == 1)
         return v[n / 2];
-    // The library stores results as float; so does SPEC.md's "mean of the two
+    // The library stores results as float; so does docs/filters.md's "mean of the two
     // middle values" once written to the float output.
     return 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }

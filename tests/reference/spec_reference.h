@@ -1,5 +1,5 @@
 // spec_reference.h: an independent, deliberately plain implementation of
-// SPEC.md's window filters for the tests: double precision, every window
+// docs/filters.md's window filters for the tests: double precision, every window
 // visited neighbour by neighbour, no shortcuts shared with the library.
 #pragma once
 
@@ -30,7 +30,7 @@ Image from_imagebuf(const OIIO::ImageBuf& img);
 
 /// `from_imagebuf` for ids: the integer formats uint8, uint16, uint32 and
 /// int32 give the whole numbers they store (OIIO's conversion would scale
-/// them to [0, 1]); ids are whole numbers (SPEC.md).
+/// them to [0, 1]); ids are whole numbers (docs/filters.md).
 Image ids_from_imagebuf(const OIIO::ImageBuf& img);
 
 /// How a window's viable values become one value.
@@ -44,7 +44,7 @@ using GuideWeight = std::function<double(int px, int py, int qx, int qy)>;
 /// Spatial weights: 1 everywhere (box) or binomial (Pascal's triangle).
 enum class Spatial { box, binomial };
 
-/// The filter of SPEC.md over `roi` (x, y and channels): for every pixel and
+/// The filter of docs/filters.md over `roi` (x, y and channels): for every pixel and
 /// channel, the viable finite values of the window of side `size` clipped to
 /// the beauty's data window, reduced by `reduce`; 0 where none is there.
 /// Returns roi.width() * roi.height() * roi.nchannels() values.

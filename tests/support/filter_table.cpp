@@ -74,33 +74,39 @@ const std::vector<FilterRow>& filter_table()
           } },
         { "dof", needs_id | needs_depth,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
-              return mcdenoise::dof(d, b, g.object_id, g.depth, s, s / 2, 0.0f, 0.0f, r, n);
+              return mcdenoise::dof(d, b, g.object_id, g.depth, s, s / 2, mcdenoise::dof_image_depth_range,
+                                    mcdenoise::dof_image_depth_range, r, n);
           } },
         { "cross_bilateral", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
-              return mcdenoise::cross_bilateral(d, b, features(g), s, 2.0f, 0.0f, {}, r, n);
+              return mcdenoise::cross_bilateral(d, b, features(g), s,
+                                                mcdenoise::default_cross_bilateral_sigma_spatial,
+                                                mcdenoise::default_cross_bilateral_sigma_color, {}, r, n);
           } },
         { "atrous", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
-              return mcdenoise::atrous(d, b, features(g), s / 2, 4.0f, {}, r, n);
+              return mcdenoise::atrous(d, b, features(g), s / 2, mcdenoise::default_atrous_sigma_luminance, {}, r,
+                                       n);
           } },
         { "nlmeans", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
-              return mcdenoise::nlmeans(d, b, features(g), s / 2, 1, 0.45f, {}, r, n);
+              return mcdenoise::nlmeans(d, b, features(g), s / 2, mcdenoise::default_nlmeans_patch_radius,
+                                        mcdenoise::default_nlmeans_strength, {}, r, n);
           } },
         { "clamp_fireflies", feature_guides,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
-              return mcdenoise::clamp_fireflies(d, b, features(g), 2.0f, s / 2, r, n);
+              return mcdenoise::clamp_fireflies(d, b, features(g), mcdenoise::default_firefly_factor, s / 2, r,
+                                                n);
           },
           true },
         { "demodulate", needs_albedo,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
-              return mcdenoise::demodulate(d, b, g.albedo, 0.01f, r, n);
+              return mcdenoise::demodulate(d, b, g.albedo, mcdenoise::default_demodulate_epsilon, r, n);
           },
           true },
         { "remodulate", needs_albedo,
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
-              return mcdenoise::remodulate(d, b, g.albedo, 0.01f, r, n);
+              return mcdenoise::remodulate(d, b, g.albedo, mcdenoise::default_demodulate_epsilon, r, n);
           },
           true },
         { "denoise", feature_guides,

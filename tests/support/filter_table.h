@@ -14,7 +14,7 @@ namespace testfilters {
 using OIIO::ImageBuf;
 using OIIO::ROI;
 
-/// The guide images a filter may read, by role (SPEC.md's argument order).
+/// The guide images a filter may read, by role (the library's argument order).
 struct GuideSet {
     ImageBuf object_id, reflect_id, normal, depth, albedo, variance;
 };
@@ -29,7 +29,8 @@ enum GuideBit : unsigned {
     needs_variance = 1u << 5,
 };
 
-/// A filter's bool form with the shared parameters: `size` is the window
+/// A filter's bool form with the shared parameters (the others at the
+/// header's named defaults): `size` is the window
 /// side; for `dof` the level count (focus at the middle level, so its
 /// widest window is `size` too); for `atrous` twice the iteration count,
 /// for `nlmeans` and `clamp_fireflies` twice the (search) radius; unused by

@@ -2,9 +2,11 @@
 // variance-guided luminance weight.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Edge-avoiding a-trous wavelet filter (Dammertz et al. 2010,
 /// "Edge-Avoiding A-Trous Wavelet Transform for fast Global Illumination
@@ -36,13 +38,14 @@ namespace mcdenoise {
 /// @param sigma_luminance Luminance edge-stopping scale, in standard
 ///                        deviations; <= 0 makes the luminance weight 1.
 /// @param sigmas          Feature fall-offs.
-ImageBuf atrous(const ImageBuf& beauty, const Guides& guides, int iterations = 5,
-                float sigma_luminance = 4.0f, const FeatureSigmas& sigmas = {}, ROI roi = {},
-                int nthreads = 0);
+ImageBuf atrous(const ImageBuf& beauty, const Guides& guides, int iterations = default_atrous_iterations,
+                float sigma_luminance = default_atrous_sigma_luminance, const FeatureSigmas& sigmas = {},
+                ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
-bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int iterations = 5,
-            float sigma_luminance = 4.0f, const FeatureSigmas& sigmas = {}, ROI roi = {},
-            int nthreads = 0);
+bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+            int iterations = default_atrous_iterations,
+            float sigma_luminance = default_atrous_sigma_luminance, const FeatureSigmas& sigmas = {},
+            ROI roi = {}, int nthreads = 0);
 
 /// The largest `iterations` `atrous` accepts.
 constexpr int max_atrous_iterations = 10;

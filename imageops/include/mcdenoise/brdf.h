@@ -3,9 +3,10 @@
 // object, so reflections stay sharp.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// BRDF mean. If the center is specular (`reflect_id` >= 0: the id of the
 /// object its mirror-reflection ray hit), a neighbour is viable when it has
@@ -14,29 +15,30 @@ namespace mcdenoise {
 /// the detail of reflections, which the object filters blur. Ids compare
 /// rounded to nearest; any negative reflect id (-0.4 too) or NaN means "not
 /// specular".
-ImageBuf brdf_mean(const ImageBuf& beauty, const ImageBuf& object_id,
-                   const ImageBuf& reflect_id, int size = 3, ROI roi = {}, int nthreads = 0);
+ImageBuf brdf_mean(const ImageBuf& beauty, const ImageBuf& object_id, const ImageBuf& reflect_id,
+                   int size = default_window_size, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool brdf_mean(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
-               const ImageBuf& reflect_id, int size = 3, ROI roi = {}, int nthreads = 0);
+               const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {}, int nthreads = 0);
 
 /// BRDF gaussian: the binomial-weighted mean over the neighbours the BRDF
 /// rule (see `brdf_mean`) makes viable, divided by the weights that
 /// contributed.
 ImageBuf brdf_gaussian(const ImageBuf& beauty, const ImageBuf& object_id,
-                       const ImageBuf& reflect_id, int size = 3, ROI roi = {},
+                       const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {},
                        int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool brdf_gaussian(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
-                   const ImageBuf& reflect_id, int size = 3, ROI roi = {}, int nthreads = 0);
+                   const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {},
+                   int nthreads = 0);
 
 /// BRDF median (beyond the report): the median over the neighbours the BRDF
 /// rule (see `brdf_mean`) makes viable, for fireflies on mirrors.
 ImageBuf brdf_median(const ImageBuf& beauty, const ImageBuf& object_id,
-                     const ImageBuf& reflect_id, int size = 3, ROI roi = {},
+                     const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {},
                      int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool brdf_median(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
-                 const ImageBuf& reflect_id, int size = 3, ROI roi = {}, int nthreads = 0);
+                 const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {}, int nthreads = 0);
 
 }  // namespace mcdenoise

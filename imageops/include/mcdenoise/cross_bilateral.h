@@ -2,9 +2,11 @@
 // features of features.h and, optionally, the beauty's own colour.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Joint / cross bilateral filter (Eisemann & Durand 2004, "Flash
 /// Photography Enhancement via Intrinsic Relighting"; Petschnigg et al.
@@ -27,12 +29,16 @@ namespace mcdenoise {
 /// @param sigma_color   Colour fall-off; <= 0 leaves colour out (a pure
 ///                      feature-guided filter).
 /// @param sigmas        Feature fall-offs.
-ImageBuf cross_bilateral(const ImageBuf& beauty, const Guides& guides, int size = 7,
-                         float sigma_spatial = 2.0f, float sigma_color = 0.0f,
+ImageBuf cross_bilateral(const ImageBuf& beauty, const Guides& guides,
+                         int size = default_cross_bilateral_size,
+                         float sigma_spatial = default_cross_bilateral_sigma_spatial,
+                         float sigma_color = default_cross_bilateral_sigma_color,
                          const FeatureSigmas& sigmas = {}, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
-                     int size = 7, float sigma_spatial = 2.0f, float sigma_color = 0.0f,
+                     int size = default_cross_bilateral_size,
+                     float sigma_spatial = default_cross_bilateral_sigma_spatial,
+                     float sigma_color = default_cross_bilateral_sigma_color,
                      const FeatureSigmas& sigmas = {}, ROI roi = {}, int nthreads = 0);
 
 }  // namespace mcdenoise

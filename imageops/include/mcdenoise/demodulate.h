@@ -2,9 +2,11 @@
 // before filtering and multiply it back after, so a filter never blurs it.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Albedo demodulation (Zimmer et al. 2015; Bako et al. 2017's "diffuse
 /// irradiance"; SVGF, Schied et al. 2017): every colour channel becomes
@@ -18,11 +20,11 @@ namespace mcdenoise {
 /// @param albedo   Three or one channels; must cover the ROI.
 /// @param epsilon  Added to the albedo so black texels do not divide by
 ///                 zero; must be > 0.
-ImageBuf demodulate(const ImageBuf& beauty, const ImageBuf& albedo, float epsilon = 0.01f,
-                    ROI roi = {}, int nthreads = 0);
+ImageBuf demodulate(const ImageBuf& beauty, const ImageBuf& albedo,
+                    float epsilon = default_demodulate_epsilon, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool demodulate(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& albedo,
-                float epsilon = 0.01f, ROI roi = {}, int nthreads = 0);
+                float epsilon = default_demodulate_epsilon, ROI roi = {}, int nthreads = 0);
 
 /// Albedo remodulation, the inverse of `demodulate`: every colour channel
 /// of `filtered` becomes `v_c * (a_k + epsilon)`, with the same albedo,
@@ -31,10 +33,10 @@ bool demodulate(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& albedo,
 /// @param filtered The demodulated (and usually filtered) image.
 /// @param albedo   Three or one channels; must cover the ROI.
 /// @param epsilon  As given to `demodulate`; must be > 0.
-ImageBuf remodulate(const ImageBuf& filtered, const ImageBuf& albedo, float epsilon = 0.01f,
-                    ROI roi = {}, int nthreads = 0);
+ImageBuf remodulate(const ImageBuf& filtered, const ImageBuf& albedo,
+                    float epsilon = default_demodulate_epsilon, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool remodulate(ImageBuf& dst, const ImageBuf& filtered, const ImageBuf& albedo,
-                float epsilon = 0.01f, ROI roi = {}, int nthreads = 0);
+                float epsilon = default_demodulate_epsilon, ROI roi = {}, int nthreads = 0);
 
 }  // namespace mcdenoise

@@ -2,9 +2,10 @@
 // chooses its parameters from the data.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Denoise a Monte Carlo render with every guide it is given: the
 /// project's best non-learned result in one call.

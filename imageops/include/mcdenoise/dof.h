@@ -2,9 +2,11 @@
 // grows with the distance of a pixel's depth level from the level in focus.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// The window side the `dof` filter uses at each pixel of `roi`, as a one
 /// channel float image (the report's "focus map"). The depths' range is
@@ -17,24 +19,24 @@ namespace mcdenoise {
 /// `1 + 2 * |level - focus_level|`. Requires `levels >= 1`,
 /// `0 <= focus_level < levels` and sides of at most 255.
 ImageBuf dof_focus_map(const ImageBuf& depth, int levels, int focus_level,
-                       float depth_near = 0.0f, float depth_far = 0.0f, ROI roi = {},
-                       int nthreads = 0);
+                       float depth_near = dof_image_depth_range, float depth_far = dof_image_depth_range,
+                       ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool dof_focus_map(ImageBuf& dst, const ImageBuf& depth, int levels, int focus_level,
-                   float depth_near = 0.0f, float depth_far = 0.0f, ROI roi = {},
-                   int nthreads = 0);
+                   float depth_near = dof_image_depth_range, float depth_far = dof_image_depth_range,
+                   ROI roi = {}, int nthreads = 0);
 
 /// Depth of field: every pixel is replaced by the `object_mean` of the
 /// window side `dof_focus_map` gives it, so the level in focus stays sharp
 /// and the others are blurred more the further their depth is from it. The
 /// report's example: 10 levels, focus 0, gives sides 1 3 5 ... 19 from front
 /// to back. Depth must cover the ROI.
-ImageBuf dof(const ImageBuf& beauty, const ImageBuf& object_id, const ImageBuf& depth,
-             int levels, int focus_level, float depth_near = 0.0f, float depth_far = 0.0f,
-             ROI roi = {}, int nthreads = 0);
+ImageBuf dof(const ImageBuf& beauty, const ImageBuf& object_id, const ImageBuf& depth, int levels,
+             int focus_level, float depth_near = dof_image_depth_range,
+             float depth_far = dof_image_depth_range, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
-         const ImageBuf& depth, int levels, int focus_level, float depth_near = 0.0f,
-         float depth_far = 0.0f, ROI roi = {}, int nthreads = 0);
+         const ImageBuf& depth, int levels, int focus_level, float depth_near = dof_image_depth_range,
+         float depth_far = dof_image_depth_range, ROI roi = {}, int nthreads = 0);
 
 }  // namespace mcdenoise

@@ -4,13 +4,14 @@
 // nlmeans.h.
 #pragma once
 
+#include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// The auxiliary buffers a feature-guided filter may use. Any may be absent
 /// (nullptr); each present one must cover the ROI (data windows) with the
-/// channel counts of DESIGN.md's guide table.
+/// channel counts of the guide roles table in docs/filters.md.
 ///
 /// Windows may reach past the ROI into the rest of the beauty's data
 /// window; a guide pixel outside the guide's own data window reads as "no

@@ -2,9 +2,11 @@
 // dominate the error of a Monte Carlo render, before any averaging.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Firefly clamp, the outlier pass of the feature-guided denoisers (as in
 /// Cycles' NLM denoiser after Rousselle, Manzi & Zwicker 2013): a pixel far
@@ -26,11 +28,12 @@ namespace mcdenoise {
 /// @param factor  How many times the 75th-percentile neighbour a pixel may
 ///                be before it is clamped; must be >= 1.
 /// @param radius  Window radius, 1..max_firefly_radius.
-ImageBuf clamp_fireflies(const ImageBuf& beauty, const Guides& guides, float factor = 2.0f,
-                         int radius = 2, ROI roi = {}, int nthreads = 0);
+ImageBuf clamp_fireflies(const ImageBuf& beauty, const Guides& guides, float factor = default_firefly_factor,
+                         int radius = default_firefly_radius, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
-                     float factor = 2.0f, int radius = 2, ROI roi = {}, int nthreads = 0);
+                     float factor = default_firefly_factor, int radius = default_firefly_radius, ROI roi = {},
+                     int nthreads = 0);
 
 /// The largest `radius` `clamp_fireflies` accepts.
 constexpr int max_firefly_radius = 7;

@@ -4,8 +4,8 @@
 
 /// @defgroup mcdenoise_intro mcdenoise: common rules
 ///
-/// Every operation follows `OIIO::ImageBufAlgo`'s conventions, and the exact
-/// filter semantics are those of `SPEC.md`:
+/// Every operation follows `OIIO::ImageBufAlgo`'s conventions; the exact rule
+/// of every filter is in `docs/filters.md`, and the rules they share are:
 ///
 /// - **Two forms.** `bool op(ImageBuf& dst, const ImageBuf& beauty, <guides>,
 ///   <params>, ROI roi = {}, int nthreads = 0)` writes into `dst`, allocating
@@ -32,6 +32,7 @@
 #include <mcdenoise/atrous.h>
 #include <mcdenoise/brdf.h>
 #include <mcdenoise/cross_bilateral.h>
+#include <mcdenoise/defaults.h>
 #include <mcdenoise/demodulate.h>
 #include <mcdenoise/denoise.h>
 #include <mcdenoise/dof.h>

@@ -3,12 +3,14 @@
 // counted rather than hidden.
 #pragma once
 
+#include <mcdenoise/export.h>
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstdint>
 #include <string>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 using OIIO::ImageBuf;
 using OIIO::ROI;

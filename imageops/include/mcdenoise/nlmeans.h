@@ -2,9 +2,11 @@
 // feature weights.
 #pragma once
 
+#include <mcdenoise/defaults.h>
+#include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise {
+namespace mcdenoise MCDENOISE_API {
 
 /// Non-local means with variance-normalised patch distances (Rousselle,
 /// Knaus & Zwicker 2012, "Adaptive Rendering with Non-Local Means
@@ -32,12 +34,14 @@ namespace mcdenoise {
 /// @param patch_radius  0..7; the patch side is 2 f + 1.
 /// @param strength      k above, > 0: larger values filter more.
 /// @param sigmas        Feature fall-offs.
-ImageBuf nlmeans(const ImageBuf& beauty, const Guides& guides, int search_radius = 7,
-                 int patch_radius = 1, float strength = 0.45f,
+ImageBuf nlmeans(const ImageBuf& beauty, const Guides& guides,
+                 int search_radius = default_nlmeans_search_radius,
+                 int patch_radius = default_nlmeans_patch_radius, float strength = default_nlmeans_strength,
                  const FeatureSigmas& sigmas = {}, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
-             int search_radius = 7, int patch_radius = 1, float strength = 0.45f,
+             int search_radius = default_nlmeans_search_radius,
+             int patch_radius = default_nlmeans_patch_radius, float strength = default_nlmeans_strength,
              const FeatureSigmas& sigmas = {}, ROI roi = {}, int nthreads = 0);
 
 /// The largest `search_radius` `nlmeans` accepts.

@@ -1,0 +1,15 @@
+// defaults.h: binds the library's named defaults as module constants.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace mcdpy {
+
+namespace py = pybind11;
+
+/// Adds the default parameters of the library's headers (`default_*`,
+/// `dof_image_depth_range`) to `module` under their C++ names, so Python
+/// code and tests read them instead of repeating the numbers.
+void bind_defaults(py::module_& module);
+
+}  // namespace mcdpy
