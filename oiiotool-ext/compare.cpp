@@ -37,19 +37,20 @@ std::string metrics_text(const mcdenoise::ImageComparison& m)
 
 }  // namespace
 
-ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files)
+ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files,
+                          size_t beauty_channels)
 {
     const ImageBuf& reference = files.get(path, "--compare");
     Discovery found = discover_channels(reference.spec(), options.beauty_channels, path);
+    if (found.beauty.size() != beauty_channels)
+        throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the input has {}", path,
+                              found.beauty.size(), beauty_channels));
     return extract_channels(reference, found.beauty);
 }
 
 void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
                       const ImageBuf& reference, const Options& options)
 {
-    if (reference.nchannels() != after.nchannels())
-        throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the result has {}", path,
-                              reference.nchannels(), after.nchannels()));
     std::string input_metrics = metrics_text(measure(before, reference, options.threads));
     std::string result_metrics = metrics_text(measure(after, reference, options.threads));
     std::printf("mcdtool: compare %s\n  input   %s\n  result  %s\n", path.c_str(), input_metrics.c_str(),

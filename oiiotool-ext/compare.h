@@ -13,8 +13,10 @@
 namespace mcdtool {
 
 /// The reference's beauty channels (discovered like the input's, or chosen
-/// by --beauty), as float. Throws RunError naming `path`.
-ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files);
+/// by --beauty), as float. Throws RunError naming `path`, also when it has
+/// not `beauty_channels` beauty channels like the input.
+ImageBuf reference_beauty(const std::string& path, const Options& options, ImageFiles& files,
+                          size_t beauty_channels);
 
 /// Prints the metrics of `before` and `after` against `reference` on
 /// stdout. Throws RunError "--compare : <library message>".

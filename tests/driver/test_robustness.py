@@ -171,7 +171,7 @@ def assert_no_new(directory, existing):
 def test_robust_kernel_size_over_the_limit(testrender_exr, tmp_path, size):
     existing = os.listdir(tmp_path)
     r = run(testrender_exr, "--median", size, "-o", tmp_path / "out.exr")
-    check_failure(r, 1, "--median : median: size must be between 1 and 255", str(size))
+    check_failure(r, 2, "--median : SIZE out of range (odd window side, 1..255)", str(size))
     assert_no_new(tmp_path, existing)
 
 
