@@ -108,8 +108,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     std::string name = dashed(command.name);
     ImageBuf dst;
     Call call{ dst, current, guides, step.values, options.threads };
-    stats.begin_command(OIIO::Strutil::join(std::vector<std::string>{ name, OIIO::Strutil::join(step.values, " ") },
-                                            " "));
+    stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
     double seconds = timer.seconds();
