@@ -229,12 +229,14 @@ def test_compare_psnr_is_positive_on_hdr(tmp_path):
     reference[:8] = 40.0
     result = reference.copy()
     result[:8] = 30.0
+    result[8:] = 0.6
     write_image(tmp_path / "ref.exr", reference, BEAUTY, fmt="float")
     write_image(tmp_path / "in.exr", result, BEAUTY, fmt="float")
     r = run(tmp_path / "in.exr", "--mean", 1, "--compare", tmp_path / "ref.exr")
     assert r.code == 0, r
     psnr = float(r.out.split("PSNR ")[1].split(" dB")[0])
-    assert psnr > 0, r
+    # clamped MSE: half the pixels 0 (both 1 after the clamp), half 0.1^2
+    assert abs(psnr - 10 * np.log10(1 / 0.005)) < 0.01, r
 
 
 def test_readme_leads_with_denoise():
