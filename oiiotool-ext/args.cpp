@@ -92,6 +92,17 @@ AovRequest parse_aov(const std::string& typed)
     return aov;
 }
 
+/// Throws a UsageError unless `value` (already known to be a number) is in
+/// `param`'s range, and odd if it must be.
+void require_in_range(const std::string& arg, const Param& param, const std::string& value)
+{
+    double number = std::strtod(value.c_str(), nullptr);
+    if (number < param.min || number > param.max)
+        throw UsageError(format("{} : {} out of range ({}), got {}", arg, param.name, param.help, value));
+    if (param.odd && std::fmod(number, 2.0) == 0.0)
+        throw UsageError(format("{} : {} must be odd ({}), got {}", arg, param.name, param.help, value));
+}
+
 /// Converts a --threads argument.
 int parse_threads(const std::string& text)
 {
@@ -115,8 +126,9 @@ const std::vector<OptionSpec>& option_table()
     static const std::vector<OptionSpec> table = {
         { "o", { "FILE" }, "Output",
           "Write the current image: every input channel and the metadata kept, the beauty "
-          "channels replaced, in the input's pixel type and compression (a format that holds at most 4 "
-          "channels, like PNG, gets the beauty only). Atomic (temp file + rename).",
+          "channels replaced, in the input's pixel type and compression (a format that cannot keep every channel "
+          "by name, like PNG or TIFF, gets the beauty only); the folder is made if missing. Atomic (temp file + "
+          "rename); a replaced file keeps its mode, a write-protected one needs --force.",
           [](Options& o, const std::vector<std::string>& a) { o.steps.push_back(Step{ nullptr, {}, a[0] }); } },
         { "d", { "TYPE" }, "Output", "Pixel type of the outputs: half, float, uint8, uint16 or uint32.",
           [](Options& o, const std::vector<std::string>& a) {
@@ -130,7 +142,7 @@ const std::vector<OptionSpec>& option_table()
               require_one_of("--compression", a[0].substr(0, a[0].find(':')), compressions);
               o.compression = a[0];
           } },
-        { "force", {}, "Output", "Allow an output to replace an input file.",
+        { "force", {}, "Output", "Allow an output to replace an input file or a write-protected file.",
           [](Options& o, const std::vector<std::string>&) { o.force = true; } },
         { "aov", { "ROLE=FILE[:CHANNELS]" }, "Guides",
           "Take a guide from FILE: CHANNELS is a comma list or a layer prefix (render.exr:N selects "
@@ -148,7 +160,9 @@ const std::vector<OptionSpec>& option_table()
         { "skip-existing", {}, "Sequences", "Skip frames whose outputs all exist already.",
           [](Options& o, const std::vector<std::string>&) { o.skip_existing = true; } },
         { "compare", { "REF" }, "Diagnostics",
-          "Print relMSE, PSNR and SSIM of the result against REF's beauty (a pattern for sequences).",
+          "Print relMSE, PSNR and SSIM of the result against REF's beauty (a pattern for sequences). PSNR is "
+          "relative to a peak of 1 on values clamped to [0, 1] (the displayable range of a linear render, as for "
+          "SSIM), so it stays positive on HDR renders.",
           [](Options& o, const std::vector<std::string>& a) { o.compare = a[0]; } },
         { "preview", { "FILE" }, "Diagnostics",
           "Write a display-referred side-by-side image: input | result (| reference with --compare).",
@@ -278,6 +292,7 @@ Options parse_command_line(const std::vector<std::string>& args)
                 throw UsageError(format("{} : {} must be {}, got '{}' (usage: {})", arg, param.name,
                                         param.type == ParamType::integer ? "an integer" : "a number",
                                         values[p], usage));
+            require_in_range(arg, param, values[p]);
         }
         options.steps.push_back(Step{ command, values, "" });
     }

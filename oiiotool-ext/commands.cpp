@@ -25,16 +25,20 @@ const ImageBuf* Call::optional_guide(Role role) const
 namespace {
 
 /// The window-side parameter every window filter takes.
-const Param size_param = { "SIZE", ParamType::integer, "odd window side, 1..255" };
+const Param size_param = { "SIZE", ParamType::integer, "odd window side, 1..255", 1, mcdenoise::max_window_size,
+                           true };
 /// The parameters of the depth-of-field filter.
-const Param levels_param = { "LEVELS", ParamType::integer, "number of depth levels, >= 1" };
-const Param focus_param = { "FOCUS", ParamType::integer, "the level in focus, 0..LEVELS-1 (0 is nearest)" };
+const Param levels_param = { "LEVELS", ParamType::integer, "number of depth levels, >= 1", 1 };
+const Param focus_param = { "FOCUS", ParamType::integer, "the level in focus, 0..LEVELS-1 (0 is nearest)", 0 };
 const Param near_param = { "NEAR", ParamType::number, "depth mapped to the first level (nearer clamps)" };
 const Param far_param = { "FAR", ParamType::number, "depth mapped past the last level (farther clamps)" };
 /// The parameters of the feature-guided filters.
-const Param iterations_param = { "ITERATIONS", ParamType::integer, "a-trous passes, 1..10 (step 2^i)" };
-const Param factor_param = { "FACTOR", ParamType::number, "times the 75th-percentile neighbour a pixel may be, >= 1" };
-const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)" };
+const Param iterations_param = { "ITERATIONS", ParamType::integer, "a-trous passes, 1..10 (step 2^i)", 1,
+                                 mcdenoise::max_atrous_iterations };
+const Param factor_param = { "FACTOR", ParamType::number, "times the 75th-percentile neighbour a pixel may be, >= 1",
+                             1 };
+const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)",
+                             0, mcdenoise::max_nlmeans_search_radius };
 
 /// The guides the feature-guided filters weigh by, when present (the
 /// variance guide only steers the filters with a colour-noise weight).

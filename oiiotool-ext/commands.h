@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -20,11 +21,16 @@ using OIIO::ImageBuf;
 /// The kind of value a command parameter takes.
 enum class ParamType { integer, number };
 
-/// One positional parameter of a command.
+/// One positional parameter of a command, with the range the library
+/// accepts, checked when the command line is parsed (before any input is
+/// read).
 struct Param {
     const char* name;   ///< shown in usage, e.g. "SIZE"
     ParamType type;
     const char* help;
+    double min = -std::numeric_limits<double>::infinity();  ///< smallest value allowed
+    double max = std::numeric_limits<double>::infinity();   ///< largest value allowed
+    bool odd = false;   ///< only odd values (window sides)
 };
 
 /// Guide images by role, each with a note saying where it came from.

@@ -37,19 +37,20 @@ std::string metrics_text(const mcdenoise::ImageComparison& m)
 
 }  // namespace
 
-ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files)
+ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files,
+                          size_t input_beauty_channels)
 {
     const ImageBuf& reference = files.get(path, "--compare");
     Discovery found = discover_channels(reference.spec(), beauty_channels, path);
+    if (found.beauty.size() != input_beauty_channels)
+        throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the input has {}", path,
+                              found.beauty.size(), input_beauty_channels));
     return extract_channels(reference, found.beauty);
 }
 
 void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
                       const ImageBuf& reference, int nthreads)
 {
-    if (reference.nchannels() != after.nchannels())
-        throw RunError(format("--compare : the reference '{}' has {} beauty channel(s), the result has {}", path,
-                              reference.nchannels(), after.nchannels()));
     std::string input_metrics = metrics_text(measure(before, reference, nthreads));
     std::string result_metrics = metrics_text(measure(after, reference, nthreads));
     std::printf("mcdtool: compare %s\n  input   %s\n  result  %s\n", path.c_str(), input_metrics.c_str(),

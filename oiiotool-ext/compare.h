@@ -14,8 +14,10 @@ namespace mcdtool {
 
 /// The reference's beauty channels (discovered like the input's, or chosen
 /// by `beauty_channels`, --beauty, when not empty), as float. Throws
-/// RunError naming `path`.
-ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files);
+/// RunError naming `path`, also when it has not `input_beauty_channels`
+/// beauty channels like the input.
+ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files,
+                          size_t input_beauty_channels);
 
 /// Prints the metrics of `before` and `after` against `reference` on
 /// stdout, computed on `nthreads` threads (0: all). Throws RunError

@@ -1,12 +1,13 @@
-// driver.cpp: mcdtool's program logic: parse, then run every frame, report
-// errors with the frame number, print --runstats, choose the exit status.
+// driver.cpp: mcdtool's program logic: parse and check the arguments, then
+// run every frame, report errors with the frame number, print --runstats
+// and a sequence's summary, choose the exit status.
 #include "driver.h"
 
 #include "error.h"
 #include "frame.h"
-#include "frames.h"
 #include "help.h"
 #include "options.h"
+#include "preflight.h"
 #include "runstats.h"
 
 #include <OpenImageIO/imageio.h>
@@ -28,21 +29,17 @@ void print_error(const std::string& message)
 /// Runs every frame (or the single image); returns the exit status.
 int run(const Options& options)
 {
-    std::vector<std::optional<int>> frames;
-    if (options.frames.empty())
-        frames.push_back(std::nullopt);
-    else
-        for (int frame : parse_frame_list(options.frames))
-            frames.push_back(frame);
-
+    const std::vector<std::optional<int>> frames = frames_to_run(options);
     RunStats stats;
     Progress progress(frames.size());
-    size_t failed = 0;
+    stats.show_progress_in(&progress);
     size_t done = 0;
     for (const std::optional<int>& frame : frames) {
         std::string where = frame ? "frame " + std::to_string(*frame) + ": " : "";
+        FrameOutcome outcome = FrameOutcome::failed;
+        progress.begin_frame(done + 1, frame.value_or(0));
         try {
-            FrameOutcome outcome = run_frame(options, frame, stats);
+            outcome = run_frame(options, frame, stats);
             if (outcome == FrameOutcome::skipped && options.verbose) {
                 progress.clear();
                 std::printf("mcdtool: %sskipped, outputs exist\n", where.c_str());
@@ -50,21 +47,20 @@ int run(const Options& options)
         } catch (const RunError& error) {
             progress.clear();
             print_error(where + error.what());
-            ++failed;
         } catch (const std::exception& error) {
             progress.clear();
             print_error(where + "internal error: " + error.what());
-            ++failed;
         }
-        stats.add_frame();
+        stats.add_frame(outcome);
         progress.update(++done, frame.value_or(0));
     }
     progress.finish();
+    stats.show_progress_in(nullptr);
     if (options.runstats)
         std::printf("%s", stats.report().c_str());
-    if (failed && frames.size() > 1)
-        print_error(std::to_string(failed) + " of " + std::to_string(frames.size()) + " frames failed");
-    return failed ? exit_run_error : exit_ok;
+    if (!options.frames.empty())  // on and off a terminal: farm logs are files
+        std::fprintf(stderr, "mcdtool: %s\n", stats.frame_summary().c_str());
+    return stats.frames(FrameOutcome::failed) ? exit_run_error : exit_ok;
 }
 
 }  // namespace
@@ -92,6 +88,12 @@ int run_mcdtool(const std::vector<std::string>& args)
                   || std::any_of(options.steps.begin(), options.steps.end(), [](const Step& s) { return !s.command; });
     if (!writes && !options.verbose)
         std::fprintf(stderr, "mcdtool WARNING: no -o, --compare or --preview: the result goes nowhere\n");
+    try {
+        check_arguments(options);
+    } catch (const UsageError& error) {
+        print_error(error.what());
+        return exit_usage_error;
+    }
     OIIO::attribute("threads", options.threads);
     return run(options);
 }

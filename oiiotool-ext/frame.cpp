@@ -49,16 +49,19 @@ std::vector<std::pair<std::string, std::string>> output_paths(const Options& opt
     return paths;
 }
 
-/// Throws unless no output would replace an input (or --force is given).
-void refuse_overwriting_inputs(const Options& options, const PathForFrame& path_of)
+/// Throws unless every output can be written: none would replace an input
+/// or a write-protected file (unless --force is given), and the folders
+/// exist (made if missing). Runs before any input is read.
+void prepare_outputs(const Options& options, const PathForFrame& path_of)
 {
-    if (options.force)
-        return;
-    for (const auto& [option, output] : output_paths(options, path_of))
-        for (const std::string& input : input_paths(options, path_of))
-            if (same_file(output, input))
-                throw RunError(format("{} : '{}' is an input of this run; add --force to replace it", option,
-                                      output));
+    for (const auto& [option, output] : output_paths(options, path_of)) {
+        if (!options.force)
+            for (const std::string& input : input_paths(options, path_of))
+                if (same_file(output, input))
+                    throw RunError(format("{} : '{}' is an input of this run; add --force to replace it", option,
+                                          output));
+        prepare_output_path(option, output, options.force);
+    }
 }
 
 /// True if --skip-existing applies: every output of the frame exists.
@@ -106,6 +109,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     std::string name = dashed(command.name);
     ImageBuf dst;
     Call call{ dst, current, guides, step.values, nthreads };
+    stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
     double seconds = timer.seconds();
@@ -129,12 +133,13 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     PathForFrame path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
     if (options.skip_existing && all_outputs_exist(options, path_of))
         return FrameOutcome::skipped;
-    refuse_overwriting_inputs(options, path_of);
+    prepare_outputs(options, path_of);
 
     std::string input_path = path_of(options.input);
     const uint64_t memory_limit = memory_limit_bytes(options.memory_limit_mb);
     ImageFiles files(stats, memory_limit);
     const ImageBuf& input = files.get(input_path, "input");
+    warn_if_display_referred(input, "input");
     Discovery found = discover_channels(input.spec(), options.beauty_channels, input_path);
     Guides guides = load_guides(input, input_path, found, options, path_of, files);
     require_memory(frame_bytes(input, found, guides), memory_limit, input_path,
@@ -144,6 +149,9 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     for (const Step& step : options.steps)  // before any work: fail fast on a missing guide
         if (step.command)
             require_guides(*step.command, guides, input_path, input.spec(), found);
+    ImageBuf reference;  // before any work: a missing reference must not cost the result
+    if (!options.compare.empty())
+        reference = reference_beauty(path_of(options.compare), options.beauty_channels, files, found.beauty.size());
 
     ImageBuf before = extract_channels(input, found.beauty);
     ImageBuf current = before;
@@ -156,16 +164,16 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         std::string path = path_of(step.output);
         OutputImage output = compose_output(input, found.beauty, current, options, path);
         batch.write(path, output.spec, output.pixels, "-o", output.stored);
+        if (output.beauty_only && input.nchannels() > int(found.beauty.size()))
+            std::fprintf(stderr,
+                         "mcdtool WARNING: -o %s : the format cannot keep %d channels by name: the beauty only "
+                         "(write EXR to keep every channel)\n",
+                         path.c_str(), input.nchannels());
         if (options.verbose)
-            std::printf("mcdtool: -o %s%s\n", path.c_str(),
-                        output.beauty_only ? " (beauty channels only: the format holds at most 4)" : "");
+            std::printf("mcdtool: -o %s\n", path.c_str());
     }
-    ImageBuf reference;
-    if (!options.compare.empty()) {
-        std::string reference_path = path_of(options.compare);
-        reference = reference_beauty(reference_path, options.beauty_channels, files);
-        print_comparison(reference_path, before, current, reference, options.threads);
-    }
+    if (!options.compare.empty())
+        print_comparison(path_of(options.compare), before, current, reference, options.threads);
     if (!options.preview.empty()) {
         write_preview(path_of(options.preview), before, current,
                       options.compare.empty() ? nullptr : &reference, options, batch);

@@ -10,9 +10,6 @@
 
 namespace mcdtool {
 
-/// What happened to one frame.
-enum class FrameOutcome { written, skipped };
-
 /// Runs `options` on `frame` (nullopt: the single input image). Throws
 /// RunError naming the culprit; then nothing of this frame is written.
 FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStats& stats);

@@ -5,7 +5,10 @@
 #include "error.h"
 #include "output.h"
 
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/strutil.h>
+
+#include <cstdio>
 
 #include <set>
 
@@ -71,6 +74,37 @@ std::set<Role> roles_used(const std::vector<Step>& steps)
     return used;
 }
 
+/// Throws unless the guide file `file` has `input`'s display window (a
+/// guide rendered at another resolution would be cropped, not scaled).
+void require_same_display_window(const ImageBuf& file, const ImageBuf& input, const std::string& context)
+{
+    OIIO::ROI g = file.roi_full();
+    OIIO::ROI b = input.roi_full();
+    if (g.xbegin == b.xbegin && g.ybegin == b.ybegin && g.xend == b.xend && g.yend == b.yend)
+        return;
+    throw RunError(format("{} : display window {} x {} ({}) differs from the beauty's {} x {} ({}): render "
+                          "the guide at the beauty's resolution", context, g.width(), g.height(), window_text(g),
+                          b.width(), b.height(), window_text(b)));
+}
+
+/// Warns when the id guide that `used` commands need is one value
+/// everywhere (Blender's default pass index 0): the object filters then
+/// work as their plain versions.
+void warn_constant_ids(const Guides& guides, const std::set<Role>& used)
+{
+    auto ids = guides.images.find(Role::id);
+    if (ids == guides.images.end() || !used.count(Role::id))
+        return;
+    OIIO::ImageBufAlgo::PixelStats stats = OIIO::ImageBufAlgo::computePixelStats(ids->second);
+    if (stats.min.empty() || stats.min[0] != stats.max[0])
+        return;
+    std::fprintf(stderr,
+                 "mcdtool WARNING: the id guide (%s) is %g everywhere: the object filters work as their plain "
+                 "versions; give the objects ids (Blender: Object Properties > Relations > Pass Index) or "
+                 "use a Cryptomatte object layer\n",
+                 guides.sources.at(Role::id).c_str(), double(stats.min[0]));
+}
+
 }  // namespace
 
 void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::string& context)
@@ -108,11 +142,13 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
         }
         require_channel_count(info, int(indices.size()), beauty_channels, channel_names(file.spec(), indices),
                               context);
+        require_same_display_window(file, input, context);
         ImageBuf guide = guide_image(file, aov.role, indices);
         require_coverage(guide, input, context);
         guides.images[aov.role] = std::move(guide);
         guides.sources[aov.role] = guide_source(path, file.spec(), aov.role, indices);
     }
+    warn_constant_ids(guides, used);
     return guides;
 }
 

@@ -1,6 +1,7 @@
 // guides.h: assembling the guide images of one frame: those discovered in
 // the input beside the beauty, then the --aov files (which win), each
-// checked for its channel count and for covering the beauty's data window.
+// checked for its channel count, the beauty's display window and covering
+// the beauty's data window; a constant id guide is warned about.
 #pragma once
 
 #include "channels.h"

@@ -37,7 +37,10 @@ const char* const exit_codes =
     "Errors print one line `mcdtool ERROR: <command or file> : <reason>` on stderr. Exit status: 0 "
     "success; 1 a file could not be read, filtered or written (for a sequence: any frame failed; the "
     "other frames are still written); 2 a usage error (unknown command, missing or malformed "
-    "argument), reported before anything is read. A failed frame leaves no output file behind.";
+    "argument, a value out of its range, an unknown OCIO display or view, --beauty or --aov channels "
+    "the first frame's header lacks), reported once, before any pixels are read. A failed frame leaves "
+    "no output file behind; the outputs' folders are made, and --compare's reference is read, before "
+    "any filtering.";
 
 /// `text` word-wrapped to `width`, every line after the first indented by `indent`.
 std::string wrap(const std::string& text, size_t indent, size_t width)
@@ -211,8 +214,10 @@ std::string help_markdown()
           "replaced per frame: a lone `#` is four digits (as in oiiotool), a run of N `#` or N `@` is N "
           "digits (`beauty.####.exr` -> `beauty.0007.exr`, as in Nuke), `%04d` is printf style. "
           "`--frames` takes `1-48`, `1-10x2`, `10-1`, `1,3,5` or mixtures. A progress line (frames, "
-          "rate, ETA) is drawn on stderr when it is a terminal. A frame that fails is reported with "
-          "its number and the others are still written; the exit status is then 1.\n";
+          "rate, ETA; and a command running for more than 2 s, with its time, also for a single image) "
+          "is drawn on stderr when it is a terminal. A frame that fails is reported with its number and "
+          "the others are still written; the exit status is then 1. A sequence ends with a summary on "
+          "stderr, terminal or not: `mcdtool: 48 frames: 40 written, 0 skipped, 8 failed`.\n";
     md += "\n## Examples\n\n```\n";
     for (const Command& command : command_table())
         md += std::string(command.example) + "\n";

@@ -11,6 +11,7 @@
 #include <OpenImageIO/strutil.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace mcdtool {
 
@@ -49,6 +50,21 @@ ImageBuf read_image(const std::string& path, std::string_view context, uint64_t 
         throw RunError(format("{} : '{}' has {} parts (subimages); only single-part files are supported, "
                               "split it with oiiotool first", context, path, image.nsubimages()));
     return image;
+}
+
+void warn_if_display_referred(const ImageBuf& image, std::string_view context)
+{
+    const OIIO::ImageSpec& spec = image.nativespec();
+    const std::string format_name = image.file_format_name();
+    const bool display_format = format_name == "png" || format_name == "jpeg";
+    const bool srgb = OIIO::Strutil::iequals(spec.get_string_attribute("oiio:ColorSpace"), "sRGB");
+    if (spec.format != OIIO::TypeDesc::UINT8 || !spec.channelformats.empty() || !(display_format || srgb))
+        return;
+    std::fprintf(stderr,
+                 "mcdtool WARNING: %s : '%s' is 8-bit display-referred (%s); the filters assume linear light, "
+                 "so denoise the renderer's linear EXR, or convert first (oiiotool IN --colorconvert sRGB "
+                 "linear -d half -o IN.exr)\n",
+                 std::string(context).c_str(), image.name().c_str(), srgb ? "sRGB" : format_name.c_str());
 }
 
 bool stored_as_integers(const ImageBuf& image, int c)

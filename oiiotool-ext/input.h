@@ -22,6 +22,11 @@ using OIIO::ImageBuf;
 /// would exceed `memory_limit` bytes (memory_limit.h).
 ImageBuf read_image(const std::string& path, std::string_view context, uint64_t memory_limit);
 
+/// Warns on stderr ("<context> : ...") when `image` is 8-bit display-
+/// referred (PNG, JPEG or an sRGB-tagged 8-bit file): the filters assume
+/// linear light.
+void warn_if_display_referred(const ImageBuf& image, std::string_view context);
+
 /// True if the file `image` was read from stores channel `c` as integers
 /// (which reading as float scaled to [0, 1]).
 bool stored_as_integers(const ImageBuf& image, int c);

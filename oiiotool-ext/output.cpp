@@ -78,6 +78,16 @@ std::vector<unsigned char> native_pixels(const ImageSpec& spec, const ImageBuf& 
     return out;
 }
 
+/// Gives `temp` the permissions of the existing file `final_path` it is to
+/// replace, so that replacing a file does not change its mode.
+void keep_mode(const std::string& final_path, const std::string& temp)
+{
+    std::error_code error;
+    std::filesystem::file_status existing = std::filesystem::status(final_path, error);
+    if (!error && std::filesystem::is_regular_file(existing))
+        std::filesystem::permissions(temp, existing.permissions(), error);
+}
+
 }  // namespace
 
 OutputBatch::~OutputBatch()
@@ -92,10 +102,13 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
                         const std::string& context, const std::map<int, ImageBuf>& stored)
 {
     Timer timer;
-    auto fail = [&](const std::string& reason) {
-        return RunError(format("{} : cannot write '{}': {}", context, path, one_line(reason)));
-    };
     std::string temp = temp_path(path);
+    auto fail = [&](const std::string& reason) {
+        std::string named = OIIO::Strutil::replace(reason, temp, path, true);
+        named = OIIO::Strutil::replace(named, std::filesystem::path(temp).filename().string(),
+                                       std::filesystem::path(path).filename().string(), true);
+        return RunError(format("{} : cannot write '{}': {}", context, path, one_line(named)));
+    };
     auto out = OIIO::ImageOutput::create(temp);
     if (!out)
         throw fail(OIIO::geterror());
@@ -123,6 +136,7 @@ void OutputBatch::commit()
     while (!pending_.empty()) {
         const Pending& pending = pending_.front();
         std::error_code error;
+        keep_mode(pending.final_path, pending.temp);
         std::filesystem::rename(pending.temp, pending.final_path, error);
         if (error)
             throw RunError(format("-o : cannot write '{}': {}", pending.final_path, error.message()));
@@ -171,12 +185,15 @@ ImageSpec output_spec(const ImageBuf& input, const Options& options)
     return spec;
 }
 
-/// True if the format chosen by `path`'s extension holds any channel count.
-bool holds_any_channels(const std::string& path)
+/// True if the format chosen by `path`'s extension holds any channel count
+/// under its channels' names. Of OpenImageIO's writers only OpenEXR stores
+/// channel names; TIFF, DPX, SGI and the like hold the channels but read
+/// them back as "channel3", "channel4", ...
+bool keeps_named_channels(const std::string& path)
 {
     auto out = OIIO::ImageOutput::create(path);
     OIIO::geterror();  // an unknown extension is reported when writing
-    return !out || out->supports("nchannels");
+    return !out || (out->supports("nchannels") && std::string(out->format_name()) == "openexr");
 }
 
 }  // namespace
@@ -186,7 +203,7 @@ OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty
 {
     OutputImage output;
     output.spec = output_spec(input, options);
-    if (input.nchannels() <= portable_channels || holds_any_channels(path)) {
+    if (input.nchannels() <= portable_channels || keeps_named_channels(path)) {
         output.pixels = merge_result(input, beauty, result);
         for (int c = 0; c < input.nchannels(); ++c)
             if (!output.spec.channelformats.empty() && output.spec.channelformat(c).size() >= 4
@@ -205,6 +222,24 @@ OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty
     output.spec.alpha_channel = -1;
     output.spec.z_channel = -1;
     return output;
+}
+
+void prepare_output_path(const std::string& option, const std::string& path, bool force)
+{
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::file_status existing = fs::status(path, error);
+    if (fs::is_directory(existing))
+        throw RunError(format("{} : cannot write '{}': it is a directory", option, path));
+    const fs::perms writable = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    if (!force && fs::is_regular_file(existing) && (existing.permissions() & writable) == fs::perms::none)
+        throw RunError(format("{} : '{}' is write-protected; add --force to replace it", option, path));
+    if (!OIIO::ImageOutput::create(path))
+        throw RunError(format("{} : cannot write '{}': {}", option, path, one_line(OIIO::geterror())));
+    fs::path folder = fs::path(path).parent_path();
+    if (!folder.empty() && !fs::is_directory(folder) && !fs::create_directories(folder, error) && error)
+        throw RunError(format("{} : cannot create the folder '{}' for '{}': {}", option, folder.string(), path,
+                              error.message()));
 }
 
 bool same_file(const std::string& a, const std::string& b)

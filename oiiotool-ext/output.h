@@ -4,7 +4,8 @@
 // otherwise. Every file of a frame is written to a temp file in its own
 // directory and renamed into place only when the whole frame succeeded, so
 // a failure leaves no output behind; an interrupted run removes its temp
-// files (cleanup.h).
+// files (cleanup.h). A replaced file keeps its mode; messages name the
+// final path, never the temp file.
 #pragma once
 
 #include "options.h"
@@ -57,7 +58,7 @@ struct OutputImage {
     /// Channels written from their stored values instead: integers of 32
     /// bits (an Arnold ID pass), which float pixels cannot carry exactly.
     std::map<int, ImageBuf> stored;
-    bool beauty_only = false;  ///< the format could not hold every channel
+    bool beauty_only = false;  ///< the format could not hold every channel by name
 };
 
 /// The output for `path`: the input with channels `beauty` replaced by the
@@ -65,9 +66,17 @@ struct OutputImage {
 /// (channels, per-channel pixel types, metadata, compression, data and
 /// display windows) with -d and --compression applied; channels the input
 /// stores as 32-bit integers pass through exactly. A format that holds at
-/// most four channels (PNG, JPEG) gets the beauty channels only.
+/// most four channels (PNG, JPEG) or does not store channel names (TIFF,
+/// DPX: the AOVs would come back as "channel4", ...) gets the beauty
+/// channels only.
 OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
                            const Options& options, const std::string& path);
+
+/// Makes `path` ready to be written by `option` ("-o", "--preview") before
+/// any work: its folder is created if missing (as renderers do), and an
+/// existing file whose mode forbids writing (e.g. 0444) is refused unless
+/// `force`. Throws RunError "<option> : ..." naming `path`.
+void prepare_output_path(const std::string& option, const std::string& path, bool force);
 
 /// True if `a` and `b` name the same file (or would, once `b` exists).
 bool same_file(const std::string& a, const std::string& b);

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace mcdtool {
@@ -66,30 +68,42 @@ void require_known(const char* option, const std::string& name, const std::vecto
                           known.empty() ? "none" : OIIO::Strutil::join(known, ", ")));
 }
 
-/// `canvas` converted from scene-linear to display values.
-ImageBuf to_display(const ImageBuf& canvas, const Options& options)
+/// The display and view of `config` that --display / --view choose (the
+/// config's defaults if not given), checked against the config; nullopt
+/// when no config is asked for and the built-in sRGB transform serves.
+/// Throws RunError for an unloadable config or an unknown name.
+std::optional<std::pair<std::string, std::string>> display_view(OIIO::ColorConfig& config, const Options& options)
 {
     bool have_config = !options.ocio_config.empty() || std::getenv("OCIO");
-    OIIO::ColorConfig config(options.ocio_config);
-    if (!have_config)
+    if (!have_config) {
         config.geterror();  // no config asked for: the built-in transforms serve
-    else if (config.has_error())
+        if (!options.display.empty() || !options.view.empty())
+            throw RunError("--display / --view : need an OCIO config (--ocio-config FILE or $OCIO)");
+        return std::nullopt;
+    }
+    if (config.has_error())
         throw RunError(format("--ocio-config : cannot load '{}': {}",
                               options.ocio_config.empty() ? "$OCIO" : options.ocio_config,
                               one_line(config.geterror())));
+    std::string name = options.display.empty() ? config.getDefaultDisplayName() : options.display;
+    require_known("--display", name, config.getDisplayNames());
+    std::string view = options.view.empty() ? config.getDefaultViewName(name) : options.view;
+    require_known("--view", view, config.getViewNames(name));
+    return std::make_pair(name, view);
+}
+
+/// `canvas` converted from scene-linear to display values.
+ImageBuf to_display(const ImageBuf& canvas, const Options& options)
+{
+    OIIO::ColorConfig config(options.ocio_config);
+    auto chosen = display_view(config, options);
     ImageBuf display;
     bool ok = false;
-    if (have_config) {
-        std::string name = options.display.empty() ? config.getDefaultDisplayName() : options.display;
-        require_known("--display", name, config.getDisplayNames());
-        std::string view = options.view.empty() ? config.getDefaultViewName(name) : options.view;
-        require_known("--view", view, config.getViewNames(name));
+    if (chosen) {
         const char* linear = config.getColorSpaceNameByRole("scene_linear");
-        ok = IBA::ociodisplay(display, canvas, name, view, linear ? linear : "linear", "", false, "", "",
-                              &config);
+        ok = IBA::ociodisplay(display, canvas, chosen->first, chosen->second, linear ? linear : "linear", "", false,
+                              "", "", &config);
     } else {
-        if (!options.display.empty() || !options.view.empty())
-            throw RunError("--display / --view : need an OCIO config (--ocio-config FILE or $OCIO)");
         ok = IBA::colorconvert(display, canvas, "linear", "sRGB", false, "", "", &config);
     }
     if (!ok)
@@ -98,6 +112,12 @@ ImageBuf to_display(const ImageBuf& canvas, const Options& options)
 }
 
 }  // namespace
+
+void check_display(const Options& options)
+{
+    OIIO::ColorConfig config(options.ocio_config);
+    display_view(config, options);
+}
 
 void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,
                    const ImageBuf* reference, const Options& options, OutputBatch& batch)

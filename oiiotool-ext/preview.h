@@ -13,6 +13,10 @@
 
 namespace mcdtool {
 
+/// Throws RunError unless the OCIO config (--ocio-config or $OCIO) loads
+/// and has the display and view --preview would use (--display, --view).
+void check_display(const Options& options);
+
 /// Adds the preview of `before` | `after` (| `reference` if not null) to
 /// `batch` at `path`, as 8-bit display values.
 void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,

@@ -32,6 +32,8 @@ std::string minutes_seconds(double seconds)
 
 void RunStats::add_command(const std::string& command, double seconds)
 {
+    if (progress_)
+        progress_->begin_command("");
     for (Entry& entry : commands_)
         if (entry.command == command) {
             entry.seconds += seconds;
@@ -42,13 +44,32 @@ void RunStats::add_command(const std::string& command, double seconds)
     commands_.push_back(Entry{ command, seconds, seconds, 1 });
 }
 
+void RunStats::begin_command(const std::string& command)
+{
+    if (progress_)
+        progress_->begin_command(command);
+}
+
+void RunStats::add_frame(FrameOutcome outcome) { ++counts_[int(outcome)]; }
+
+std::string RunStats::frame_summary() const
+{
+    int written = frames(FrameOutcome::written);
+    int skipped = frames(FrameOutcome::skipped);
+    int failed = frames(FrameOutcome::failed);
+    return format("{} frames: {} written, {} skipped, {} failed", written + skipped + failed, written, skipped,
+                  failed);
+}
+
 std::string RunStats::report() const
 {
     std::string text = "mcdtool runstats:\n";
     auto row = [&text](const std::string& key, const std::string& value) {
         text += format("  {:<{}} {}\n", key, runstats_key_width, value);
     };
-    row("frames", std::to_string(frames_));
+    row("frames", format("{} ({} written, {} skipped, {} failed)", frames(FrameOutcome::written)
+                          + frames(FrameOutcome::skipped) + frames(FrameOutcome::failed),
+                          frames(FrameOutcome::written), frames(FrameOutcome::skipped), frames(FrameOutcome::failed)));
     row("total time", format("{:.3f} s", total_.seconds()));
     row("read time", format("{:.3f} s", read_seconds_));
     row("write time", format("{:.3f} s", write_seconds_));
@@ -69,23 +90,73 @@ size_t peak_memory_bytes()
     return size_t(usage.ru_maxrss) * bytes_per_rusage_unit;
 }
 
-Progress::Progress(size_t total) : total_(total), active_(total > 1 && isatty(fileno(stderr))) {}
+/// How often the ticker thread looks at the running command.
+constexpr std::chrono::milliseconds tick_interval(250);
 
-void Progress::update(size_t done, int frame)
+Progress::Progress(size_t total) : total_(total), active_(total > 0 && isatty(fileno(stderr)))
 {
-    if (!active_)
+    if (active_)
+        ticker_ = std::thread([this] { tick(); });
+}
+
+Progress::~Progress()
+{
+    if (!ticker_.joinable())
         return;
-    double elapsed = timer_.seconds();
-    double rate = elapsed > 0.0 ? double(done) / elapsed : 0.0;
-    double eta = rate > 0.0 ? double(total_ - done) / rate : 0.0;
-    std::fprintf(stderr, "\r\033[Kmcdtool: frame %d  %zu/%zu  %.2f frames/s  ETA %s", frame, done, total_,
-                 rate, minutes_seconds(eta).c_str());
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    ticker_.join();
+}
+
+void Progress::begin_frame(size_t index, int frame)
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    frame_label_ = total_ > 1 ? format("frame {} ({}/{})  ", frame, index, total_) : "";
+}
+
+void Progress::begin_command(const std::string& command)
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (command.empty() && drawn_) {  // a command ended: its line goes, so messages start clean
+        std::fprintf(stderr, "\r\033[K");
+        drawn_ = false;
+    }
+    command_ = command;
+    command_timer_ = Timer();
+}
+
+void Progress::tick()
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, tick_interval, [this] { return stop_; }))
+        if (!command_.empty() && command_timer_.seconds() > slow_seconds)
+            draw(format("{}{}  {:.0f} s", frame_label_, command_, command_timer_.seconds()));
+}
+
+void Progress::draw(const std::string& text)
+{
+    std::fprintf(stderr, "\r\033[Kmcdtool: %s", text.c_str());
     std::fflush(stderr);
     drawn_ = true;
 }
 
+void Progress::update(size_t done, int frame)
+{
+    if (!active_ || total_ < 2)
+        return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    double elapsed = timer_.seconds();
+    double rate = elapsed > 0.0 ? double(done) / elapsed : 0.0;
+    double eta = rate > 0.0 ? double(total_ - done) / rate : 0.0;
+    draw(format("frame {}  {}/{}  {:.2f} frames/s  ETA {}", frame, done, total_, rate, minutes_seconds(eta)));
+}
+
 void Progress::clear()
 {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (active_ && drawn_) {
         std::fprintf(stderr, "\r\033[K");
         drawn_ = false;
@@ -94,6 +165,7 @@ void Progress::clear()
 
 void Progress::finish()
 {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (active_ && drawn_) {
         std::fprintf(stderr, "\n");
         drawn_ = false;

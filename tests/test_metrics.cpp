@@ -57,6 +57,21 @@ TEST(Metrics, MseRelMseAndPsnrByHand)
     EXPECT_NEAR(mcdenoise::ssim(res, ref), c.ssim, 0);
 }
 
+// HDR values: the reference holds an emitter at 40, the result misses it
+// by 10 (MSE far above 1). PSNR is on values clamped to [0, 1]: only the
+// 0.2 error of the other pixel counts, so it stays positive.
+TEST(Metrics, PsnrOnHdrIsOnValuesClampedToThePeak)
+{
+    const ImageBuf ref = make_image(2, 1, 3, { 40.0f, 40.0f, 40.0f, 0.5f, 0.5f, 0.5f });
+    const ImageBuf res = make_image(2, 1, 3, { 30.0f, 30.0f, 30.0f, 0.7f, 0.7f, 0.7f });
+    const mcdenoise::ImageComparison c = mcdenoise::compare_images(res, ref);
+    ASSERT_TRUE(c.ok) << c.error;
+    EXPECT_GT(c.mse, 1.0);
+    // clamped: (0 + 0 + 0 + 0.04 * 3) / 6 = 0.02 -> 10 log10(1 / 0.02)
+    EXPECT_NEAR(c.psnr, 10.0 * std::log10(1.0 / 0.02), 1e-5);
+    EXPECT_GT(c.psnr, 0.0);
+}
+
 TEST(Metrics, IdenticalImages)
 {
     const ImageBuf a = testimg::random_image(23, 17, 3, 5);

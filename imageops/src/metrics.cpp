@@ -203,8 +203,9 @@ ImageComparison compare_images(const ImageBuf& result, const ImageBuf& reference
     // per pixel: finite mask and clamped luminance; per row: error sums
     std::vector<double> mask(npix), lx(npix), ly(npix);
     std::vector<double> row_sq(static_cast<size_t>(h)), row_rel(static_cast<size_t>(h));
+    std::vector<double> row_peak_sq(static_cast<size_t>(h));  // on values clamped to [0, psnr_peak], for PSNR
     for_rows(roi, nthreads, [&](int y) {
-        double sq = 0, rel = 0;
+        double sq = 0, rel = 0, peak_sq = 0;
         for (int x = 0; x < w; ++x) {
             const size_t i = size_t(y) * w + size_t(x);
             const float* px = &xs[i * size_t(nch)];
@@ -220,6 +221,8 @@ ImageComparison compare_images(const ImageBuf& result, const ImageBuf& reference
                 const double d = double(px[c]) - double(pr[c]);
                 sq += d * d;
                 rel += d * d / (double(pr[c]) * double(pr[c]) + rel_mse_epsilon);
+                const double dc = std::clamp(double(px[c]), 0.0, psnr_peak) - std::clamp(double(pr[c]), 0.0, psnr_peak);
+                peak_sq += dc * dc;
             }
             double yx = 0, yr = 0;
             if (nch >= 3) {
@@ -238,12 +241,14 @@ ImageComparison compare_images(const ImageBuf& result, const ImageBuf& reference
         }
         row_sq[size_t(y)] = sq;
         row_rel[size_t(y)] = rel;
+        row_peak_sq[size_t(y)] = peak_sq;
     });
-    double sq = 0, rel = 0;
+    double sq = 0, rel = 0, peak_sq = 0;
     int64_t finite_pixels = 0;
     for (int y = 0; y < h; ++y) {
         sq += row_sq[size_t(y)];
         rel += row_rel[size_t(y)];
+        peak_sq += row_peak_sq[size_t(y)];
     }
     for (double m : mask)
         finite_pixels += m != 0 ? 1 : 0;
@@ -258,8 +263,9 @@ ImageComparison compare_images(const ImageBuf& result, const ImageBuf& reference
     const double values = double(finite_pixels) * nch;
     cmp.mse = sq / values;
     cmp.rel_mse = rel / values;
-    cmp.psnr = cmp.mse > 0 ? 10 * std::log10(psnr_peak * psnr_peak / cmp.mse)
-                           : std::numeric_limits<double>::infinity();
+    const double clamped_mse = peak_sq / values;
+    cmp.psnr = clamped_mse > 0 ? 10 * std::log10(psnr_peak * psnr_peak / clamped_mse)
+                               : std::numeric_limits<double>::infinity();
     cmp.ssim = mean_ssim(lx, ly, mask, w, h, nthreads);
     return cmp;
 }

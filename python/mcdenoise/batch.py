@@ -20,10 +20,12 @@ Command line (mcdtool's sequence options, plus where to run):
         [--scheduler tcp://HOST:PORT] [--workers N] [--retries N] [--chunk-size N] [--quiet]
 """
 import concurrent.futures
+import contextlib
 import os
 import shlex
 import sys
 import time
+import types
 from dataclasses import dataclass, field
 
 from . import _mcdenoise
@@ -214,16 +216,41 @@ def _failed_chunk(chunk, error):
     return [FrameResult(frame, "failed", 1, 0.0, message, "") for frame in chunk]
 
 
+@contextlib.contextmanager
+def _without_main_script():
+    """Hides the caller's __main__ module while pool processes start.
+
+    A 'forkserver' (or 'spawn') process re-runs the parent's main script
+    (as __mp_main__) before it takes a task, so a script that calls
+    denoise_sequence at top level without `if __name__ == "__main__":`
+    would call it again in every pool process, which multiprocessing
+    refuses: every frame failed with BrokenProcessPool. The tasks are
+    mcdenoise.batch.run_frames with plain arguments and never need the
+    caller's script, so the processes are started as if there were none
+    (an empty __main__): nothing is re-run, and the guard is unnecessary.
+    """
+    saved = sys.modules["__main__"]
+    sys.modules["__main__"] = types.ModuleType("__main__")
+    try:
+        yield
+    finally:
+        sys.modules["__main__"] = saved
+
+
 def _run_on_pool(workers, args, chunks, retries, summary, report):
     # Imported here: the Blender add-on imports this module for run_frames,
     # and importing multiprocessing inside Debian's Blender 3.4 makes Blender
     # crash when it exits.
     import multiprocessing
-    # forkserver: the pool's processes start clean rather than forking a
-    # parent that may hold threads (OpenImageIO's pool, the caller's).
+    # forkserver rather than fork: the pool's processes start from a clean
+    # single-threaded server instead of a copy of a parent that may hold
+    # threads (OpenImageIO's pool, the caller's), whose locks a fork could
+    # copy held. The pool starts its processes in submit(), inside the
+    # block that hides the main script.
     context = multiprocessing.get_context("forkserver")
     with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        futures = {pool.submit(run_frames, args, chunk, retries): chunk for chunk in chunks}
+        with _without_main_script():
+            futures = {pool.submit(run_frames, args, chunk, retries): chunk for chunk in chunks}
         for future in concurrent.futures.as_completed(futures):
             try:
                 results = future.result()

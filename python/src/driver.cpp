@@ -7,6 +7,7 @@
 #include "oiiotool-ext/frame.h"
 #include "oiiotool-ext/frames.h"
 #include "oiiotool-ext/options.h"
+#include "oiiotool-ext/preflight.h"
 #include "oiiotool-ext/runstats.h"
 
 #include <pybind11/stl.h>
@@ -35,10 +36,12 @@ std::string run_frame(const std::vector<std::string>& args, std::optional<int> f
     return mcdtool::run_frame(options, frame, stats) == mcdtool::FrameOutcome::written ? "written" : "skipped";
 }
 
-/// The input, --frames and every output pattern of a command line.
+/// The input, --frames and every output pattern of a command line, after
+/// mcdtool's checks of every argument value (preflight.h).
 py::dict describe_command_line(const std::vector<std::string>& args)
 {
     mcdtool::Options options = parse_for_run(args);
+    mcdtool::check_arguments(options);
     std::vector<std::string> outputs;
     for (const mcdtool::Step& step : options.steps)
         if (!step.command)
@@ -60,8 +63,9 @@ void bind_driver(py::module_& m)
           "'skipped' (--skip-existing); raises UsageError or Error with mcdtool's\n"
           "message, in which case nothing of the frame was written.");
     m.def("_describe_command_line", &describe_command_line, py::arg("args"),
-          "Parses mcdtool's command line `args`: a dict with its 'input',\n"
-          "'frames' (as typed) and 'outputs' (the -o patterns); raises UsageError.");
+          "Parses and checks mcdtool's command line `args` as mcdtool does before\n"
+          "reading any frame: a dict with its 'input', 'frames' (as typed) and\n"
+          "'outputs' (the -o patterns); raises UsageError.");
     m.def("frame_list", &mcdtool::parse_frame_list, py::arg("frames"),
           "The frames of an mcdtool frame list: '1-48', '1-10x2', '10-1', '1,3,5'\n"
           "or mixtures; raises UsageError naming the bad part.");

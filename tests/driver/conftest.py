@@ -48,12 +48,17 @@ def assert_no_outputs(directory, before):
     assert sorted(os.listdir(directory)) == sorted(before)
 
 
-def write_image(path, pixels, names, fmt="half", compression=None, origin=(0, 0), attrs=None):
-    """Writes `pixels` (H x W x C float) with channel `names` to `path`."""
+def write_image(path, pixels, names, fmt="half", compression=None, origin=(0, 0), attrs=None, display=None):
+    """Writes `pixels` (H x W x C float) with channel `names` to `path`; the
+    data window starts at `origin`, the display window is `display` (width,
+    height from (0, 0)) or the data window's size."""
     h, w, c = pixels.shape
     spec = oiio.ImageSpec(w, h, c, fmt)
     spec.channelnames = tuple(names)
     spec.x, spec.y = origin
+    if display:
+        spec.full_x, spec.full_y = 0, 0
+        spec.full_width, spec.full_height = display
     if compression:
         spec.attribute("compression", compression)
     for key, value in (attrs or {}).items():

@@ -65,5 +65,5 @@ def test_feature_commands_without_guides_and_missing_albedo(tmp_path):
     check_failure(r, 1, "--demodulate", "albedo")
     assert not (tmp_path / "bad.exr").exists()
     r = run(path, "--nlmeans", 200, "-o", tmp_path / "bad.exr")
-    check_failure(r, 1, "search_radius")
+    check_failure(r, 2, "SEARCH_RADIUS out of range")
     assert not (tmp_path / "bad.exr").exists()

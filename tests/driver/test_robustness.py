@@ -137,8 +137,8 @@ def test_robust_inputs_never_modified(testrender_exr, tmp_path):
     assert good.code == 0, good
     bad = run(testrender_exr, "--aov", f"id={ids_file}", "--median", 3, "-o", testrender_exr)
     check_failure(bad, 1, "is an input of this run")
-    bad = run(testrender_exr, "--median", 3, "-o", tmp_path / "x.exr", "--median", 4, "-o", ids_file)
-    check_failure(bad, 1, "--median : ")
+    bad = run(testrender_exr, "--median", 3, "-o", tmp_path / "x.exr", "--dof", 2, 5, "-o", ids_file)
+    check_failure(bad, 1, "--dof : ")
     assert [digest(p) for p in inputs] == before
 
 
@@ -171,7 +171,7 @@ def assert_no_new(directory, existing):
 def test_robust_kernel_size_over_the_limit(testrender_exr, tmp_path, size):
     existing = os.listdir(tmp_path)
     r = run(testrender_exr, "--median", size, "-o", tmp_path / "out.exr")
-    check_failure(r, 1, "--median : median: size must be between 1 and 255", str(size))
+    check_failure(r, 2, "--median : SIZE out of range (odd window side, 1..255)", str(size))
     assert_no_new(tmp_path, existing)
 
 
@@ -245,7 +245,7 @@ def test_robust_guides_with_other_covering_data_windows(tmp_path):
     # holding another object there (which must not leak in).
     big = np.full((h + 10, w + 10, 1), 9.0, np.float32)
     big[5:-5, 5:-5, 0] = ids
-    big_ids = write_image(tmp_path / "big_ids.exr", big, ["Y"], fmt="float", origin=(-2, -7))
+    big_ids = write_image(tmp_path / "big_ids.exr", big, ["Y"], fmt="float", origin=(-2, -7), display=(w, h))
     exact_ids = write_image(tmp_path / "ids.exr", ids[..., None], ["Y"], fmt="float", origin=(3, -2))
     a, a_spec = filtered(src, tmp_path / "a.exr", "--aov", f"id={big_ids}", "--object-median", 5)
     b, _ = filtered(src, tmp_path / "b.exr", "--aov", f"id={exact_ids}", "--object-median", 5)

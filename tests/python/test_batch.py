@@ -1,11 +1,16 @@
 """mcdenoise.batch on the local process pool: the files equal mcdtool's
-sequence output; --skip-existing, failed frames, bad command lines, and
-inputs that must never be replaced; an unreachable --scheduler."""
+sequence output; --skip-existing, failed frames, bad command lines and
+argument values (raised once, before any frame), inputs that must never be
+replaced; an unreachable --scheduler; the docs' example run verbatim as a
+plain script and from stdin."""
 import os
+import shutil
 import socket
 import subprocess
 import sys
 
+import numpy as np
+import OpenImageIO as oiio
 import pytest
 
 import mcdenoise
@@ -123,3 +128,60 @@ def test_unreachable_scheduler_is_an_error(sequence, tmp_path):
     assert r.returncode == 1, r.stderr
     assert r.stderr.startswith("mcdenoise.batch ERROR: ") and f"tcp://127.0.0.1:{port}" in r.stderr, r.stderr
     assert os.listdir(tmp_path) == []
+
+
+def test_usage_errors_raise_once_before_any_frame(sequence, tmp_path):
+    """Argument values (a size, --beauty channels the first frame lacks) are
+    checked before any frame runs: UsageError, no retries, nothing written."""
+    out = tmp_path / "clean.####.exr"
+    with pytest.raises(mcdenoise.UsageError, match="SIZE must be odd"):
+        denoise_sequence(sequence, "1-4", "--median 4", out, progress=False)
+    with pytest.raises(mcdenoise.UsageError, match="no channel or layer 'X'"):
+        denoise_sequence(sequence, "1-4", CHAIN, out, options="--beauty X,Y,Z", progress=False)
+    r = batch_cli(sequence, "--frames", "1-4", "--median", "4", "-o", out)
+    assert r.returncode == 2 and r.stderr.count("ERROR") == 1 and "odd" in r.stderr, r.stderr
+    assert os.listdir(tmp_path) == []
+
+
+def docs_batch_example():
+    """The denoise_sequence example of docs/python.md, verbatim."""
+    docs = open(os.path.join(os.path.dirname(__file__), "..", "..", "docs", "python.md")).read()
+    blocks = [block.split("```")[0] for block in docs.split("```python\n")[1:]]
+    return next(block for block in blocks if "denoise_sequence(" in block)
+
+
+def write_docs_example_frames(directory):
+    """shot/beauty.0001-0048.exr (beauty and object ids) and
+    shot/normal.####.exr (N.X, N.Y, N.Z): the files the docs example names."""
+    shot = directory / "shot"
+    shot.mkdir()
+    rng = np.random.default_rng(18)
+    for frame in range(1, 49):
+        ids = np.zeros((16, 16, 1), np.float32)
+        ids[:, 8:] = 1.0
+        beauty = np.concatenate([0.5 + 0.1 * rng.standard_normal((16, 16, 3)).astype(np.float32), ids], axis=2)
+        normal = np.zeros((16, 16, 3), np.float32)
+        normal[..., 2] = 1.0
+        for name, pixels, channels in (("beauty", beauty, ("R", "G", "B", "id")),
+                                       ("normal", normal, ("N.X", "N.Y", "N.Z"))):
+            spec = oiio.ImageSpec(16, 16, len(channels), "half")
+            spec.channelnames = channels
+            buf = oiio.ImageBuf(spec)
+            buf.set_pixels(oiio.ROI(), pixels)
+            assert buf.write(str(shot / f"{name}.{frame:04d}.exr")), oiio.geterror()
+
+
+def test_docs_example_runs_as_a_plain_script_and_from_stdin(tmp_path):
+    """No `if __name__ == "__main__":` guard: the pool does not re-run the
+    caller's script. The example's output folder 'clean' does not exist."""
+    write_docs_example_frames(tmp_path)
+    script = tmp_path / "denoise_shot.py"
+    script.write_text(docs_batch_example())
+    for how in ("script", "stdin"):
+        command = [sys.executable, str(script)] if how == "script" else [sys.executable, "-"]
+        r = subprocess.run(command, cwd=tmp_path, input=script.read_text() if how == "stdin" else None,
+                           capture_output=True, text=True, timeout=600)
+        assert r.returncode == 0, (how, r.stderr)
+        assert "BrokenProcessPool" not in r.stderr and "48 written, 0 skipped, 0 failed" in r.stderr, (how, r.stderr)
+        assert sorted(os.listdir(tmp_path / "clean")) == [f"beauty.{f:04d}.exr" for f in range(1, 49)]
+        shutil.rmtree(tmp_path / "clean")

@@ -19,6 +19,9 @@ using OIIO::ROI;
 /// keeps black reference pixels from dominating (Rousselle et al. 2011).
 constexpr double rel_mse_epsilon = 0.01;
 /// The peak value PSNR is relative to: 1, the white of a linear render.
+/// PSNR is computed on values clamped to [0, psnr_peak], so on HDR
+/// renders (emitters, fireflies far above 1) it stays >= 0 dB and measures
+/// the displayable range, as SSIM's clamped luminance does.
 constexpr double psnr_peak = 1.0;
 /// SSIM's gaussian window: 11 x 11 taps, sigma 1.5 (Wang et al. 2004).
 constexpr int ssim_window_size = 11;
@@ -32,7 +35,7 @@ constexpr double ssim_k2 = 0.03;
 struct ImageComparison {
     double rel_mse = 0;     ///< mean over pixels and channels of (x-r)^2 / (r^2 + 0.01)
     double mse = 0;         ///< mean over pixels and channels of (x-r)^2
-    double psnr = 0;        ///< 10 log10(1 / mse) in dB; +Inf when mse == 0
+    double psnr = 0;        ///< 10 log10(1 / mse of values clamped to [0, 1]) in dB; +Inf when that is 0
     double ssim = 0;        ///< mean SSIM of the luminance (see `compare_images`)
     int64_t pixels = 0;     ///< pixels that entered the metrics
     int64_t nonfinite = 0;  ///< pixels left out: a NaN or Inf in either image
@@ -55,7 +58,9 @@ struct ImageComparison {
 /// metrics are NaN.
 ///
 /// - relMSE and MSE average over pixels and channels.
-/// - PSNR is relative to a peak of 1 (`psnr_peak`).
+/// - PSNR is relative to a peak of 1 (`psnr_peak`), over values clamped
+///   to [0, 1]: 10 log10(1 / MSE'), MSE' the MSE of the clamped values (the
+///   plain MSE when both images lie in [0, 1]); it is never negative.
 /// - SSIM is computed on luminance Y = 0.2126 R + 0.7152 G + 0.0722 B of the
 ///   ROI's first three channels (the mean of the channels if the ROI has fewer
 ///   than three), clamped to [0, 1] so emitters and fireflies cannot dominate
