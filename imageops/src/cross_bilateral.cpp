@@ -20,10 +20,9 @@ namespace {
 void add_colour_exponent(const ColourField& colour, float scale, int y, int x0, int n, int dx,
                          int dy, float* e)
 {
-    const size_t pc = colour.offset(x0, y), pq = colour.offset(x0 + dx, y + dy);
-    for (const std::vector<float>& plane : colour.colour) {
-        const float* a = plane.data() + pc;
-        const float* b = plane.data() + pq;
+    for (int c = 0; c < colour.nchannels(); ++c) {
+        const float* a = colour.colour.from(c, x0, y);
+        const float* b = colour.colour.from(c, x0 + dx, y + dy);
         for (int i = 0; i < n; ++i) {
             const float t = a[i] - b[i];
             e[i] += scale * (t * t);

@@ -29,7 +29,7 @@ inline size_t percentile_rank(size_t n) { return (3 * (n - 1)) / 4; }
 float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, int radius,
                   int x, int y, std::vector<float>& scratch)
 {
-    const ROI& reg   = colour.region;
+    const ROI& reg   = colour.region();
     const Span xs    = clip_window(x, radius, reg.xbegin, reg.xend);
     const Span ys    = clip_window(y, radius, reg.ybegin, reg.yend);
     const Id id = ids ? ids->at(x, y) : 0;
@@ -37,14 +37,14 @@ float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, i
     for (int qy = ys.begin; qy < ys.end; ++qy)
         for (int qx = xs.begin; qx < xs.end; ++qx)
             if ((qx != x || qy != y) && (!ids || ids->at(qx, qy) == id))
-                scratch[n++] = colour.luminance[colour.offset(qx, qy)];
+                scratch[n++] = colour.luminance.at(qx, qy);
     if (n == 0)
         return 1.0f;
     const size_t k = percentile_rank(n);
     std::nth_element(scratch.begin(), scratch.begin() + std::ptrdiff_t(k),
                      scratch.begin() + std::ptrdiff_t(n));
     const float bound = factor * scratch[k];
-    const float lum   = colour.luminance[colour.offset(x, y)];
+    const float lum   = colour.luminance.at(x, y);
     if (!(lum > bound))
         return 1.0f;
     return bound > 0.0f ? bound / lum : 0.0f;
@@ -59,11 +59,11 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
                    const ROI& roi, int y, std::vector<uint16_t>& count,
                    std::vector<uint16_t>& viable, std::vector<uint8_t>& suspect)
 {
-    const ROI& reg = colour.region;
+    const ROI& reg = colour.region();
     const int w    = roi.width();
     std::fill(count.begin(), count.end(), uint16_t(0));
     std::fill(viable.begin(), viable.end(), uint16_t(0));
-    const float* lp = colour.luminance.data() + colour.offset(roi.xbegin, y);
+    const float* lp = colour.luminance.from(roi.xbegin, y);
     for (int dy = -radius; dy <= radius; ++dy) {
         if (y + dy < reg.ybegin || y + dy >= reg.yend)
             continue;
@@ -77,7 +77,7 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
             // Pointers start at i0: the neighbour of i < i0 lies outside.
             const int n = i1 - i0, xq = roi.xbegin + i0 + dx;
             const float* p  = lp + i0;
-            const float* q  = colour.luminance.data() + colour.offset(xq, y + dy);
+            const float* q  = colour.luminance.from(xq, y + dy);
             uint16_t* c     = count.data() + i0;
             uint16_t* v     = viable.data() + i0;
             if (!ids) {

@@ -8,6 +8,7 @@
 #include "median_kernel.h"
 #include "operation.h"
 #include "pixel_block.h"
+#include "plane.h"
 #include "window.h"
 
 #include <limits>
@@ -20,17 +21,15 @@ namespace mcdenoise {
 /// channel over `region`, and, when any value is non-finite, the share of
 /// non-finite values in each ROI pixel's window, per channel.
 struct MedianSource {
-    OIIO::ROI region;
     OIIO::ROI roi;
     int radius = 0;
-    std::vector<std::unique_ptr<float[]>> planes;
+    Planes<float> planes;
     std::unique_ptr<ResultPixels> nonfinite_share;
 
-    const float* plane_row(int c, int y) const
-    {
-        return planes[size_t(c)].get() + size_t(y - region.ybegin) * region.width()
-               - region.xbegin;
-    }
+    /// The region the planes cover.
+    const OIIO::ROI& region() const { return planes.region; }
+    /// Channel c's row y, indexed by x (from `region().xbegin`).
+    const float* plane_row(int c, int y) const { return planes.row(c, y) - planes.region.xbegin; }
     bool finite_window(int c, int x, int y) const
     {
         return !nonfinite_share || nonfinite_share->pixel(x, y)[c] == 0.0f;
@@ -55,7 +54,7 @@ void median_strip(const MedianSource& src, const Rule& rule, const OIIO::ROI& st
                   ResultPixels& result)
 {
     const int r = src.radius, k = 2 * r + 1;
-    const OIIO::ROI& reg     = src.region;
+    const OIIO::ROI& reg     = src.region();
     const MedianKernel wide   = wide_median_kernel(k);
     const MedianKernel narrow = narrow_median_kernel(k);
     const SlotMedians by_slots = slot_median_kernel(k);

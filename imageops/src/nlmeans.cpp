@@ -102,19 +102,13 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                 if (yy + dy < dw.ybegin || yy + dy >= dw.yend || xa >= xb)
                     continue;
                 float* d = dist.data() + size_t(yy - (y0 - f)) * pw + (xa - (x0 - f));
-                const size_t up = in.colour.offset(xa, yy), uq = in.colour.offset(xa + dx, yy + dy);
                 const int m = xb - xa;
-                const int vw = in.variance.region.width();
-                const size_t sp = size_t(yy - in.variance.region.ybegin) * vw
-                                  + size_t(xa - in.variance.region.xbegin);
-                const size_t sq = size_t(yy + dy - in.variance.region.ybegin) * vw
-                                  + size_t(xa + dx - in.variance.region.xbegin);
                 DistanceRows rows;
                 for (int c = 0; c < nc; ++c) {
-                    rows.u_p[c] = in.colour.colour[size_t(c)].data() + up;
-                    rows.u_q[c] = in.colour.colour[size_t(c)].data() + uq;
-                    rows.v_p[c] = in.variance.colour[size_t(c)].data() + sp;
-                    rows.v_q[c] = in.variance.colour[size_t(c)].data() + sq;
+                    rows.u_p[c] = in.colour.colour.from(c, xa, yy);
+                    rows.u_q[c] = in.colour.colour.from(c, xa + dx, yy + dy);
+                    rows.v_p[c] = in.variance.colour.from(c, xa, yy);
+                    rows.v_q[c] = in.variance.colour.from(c, xa + dx, yy + dy);
                 }
                 if (nc == 3)
                     distance_row<3>(rows, in.k2, channel_mean, m, d);

@@ -135,17 +135,14 @@ PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads)
     return out;
 }
 
-std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int nthreads)
+Planes<float> channel_planes(const PixelBlock& src, int nthreads)
 {
     const int w = src.width(), nc = src.nchannels;
-    std::vector<std::unique_ptr<float[]>> planes;
-    for (int c = 0; c < nc; ++c)
-        planes.emplace_back(new float[size_t(w) * src.height()]);
+    Planes<float> planes(src.region, nc);
     parallel_rows(src.region, nthreads, [&](int y) {
-        const float* in     = src.row(y);
-        const size_t offset = size_t(y - src.region.ybegin) * w;
+        const float* in = src.row(y);
         for (int c = 0; c < nc; ++c) {
-            float* dst = planes[size_t(c)].get() + offset;
+            float* dst = planes.row(c, y);
             for (int x = 0; x < w; ++x)
                 dst[x] = in[std::ptrdiff_t(x) * nc + c];
         }
