@@ -3,6 +3,7 @@
 #include <mcdenoise/atrous.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
 #include "window.h"
@@ -108,35 +109,26 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
             std::vector<float> e(len), w(len), wsum(len, 0.0f), w2var(len, 0.0f);
             const float* lum_p = cur.luminance.from(x0, y);
             const float* inv_p = inv.from(x0, y);
-            for (int ky = -tap_radius; ky <= tap_radius; ++ky) {
-                const int dy = ky * step;
-                if (y + dy < dw.ybegin || y + dy >= dw.yend)
-                    continue;
-                for (int kx = -tap_radius; kx <= tap_radius; ++kx) {
-                    const int dx = kx * step;
-                    const int i0 = std::max(0, dw.xbegin - dx - x0);
-                    const int i1 = std::min(n, dw.xend - dx - x0);
-                    if (i0 >= i1)
-                        continue;
-                    const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
-                    // Neighbour pointers start at i0 (those of i < i0 lie outside).
-                    const float* lum_q = cur.luminance.from(x0 + dx + i0, y + dy);
-                    const float* var_q = cur.variance.from(x0 + dx + i0, y + dy);
-                    if (dx == 0 && dy == 0) {
-                        std::fill(w.begin() + i0, w.begin() + i1, h);
-                    } else {
-                        for (int i = i0; i < i1; ++i)
-                            e[i] = std::fabs(lum_p[i] - lum_q[i - i0]) * inv_p[i];
-                        features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, h,
-                                             w.data() + i0);
-                    }
-                    for (int i = i0; i < i1; ++i) {
-                        wsum[i] += w[i];
-                        w2var[i] += w[i] * w[i] * var_q[i - i0];
-                    }
-                    sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
+            for_each_offset(y, x0, n, tap_radius, step, dw, [&](const Offset& o) {
+                const int i0 = o.i0, i1 = o.i1;
+                const float h = b3_spline[o.ky + tap_radius] * b3_spline[o.kx + tap_radius];
+                // Neighbour pointers start at i0 (those of i < i0 lie outside).
+                const float* lum_q = cur.luminance.from(o.first_neighbour(x0), y + o.dy);
+                const float* var_q = cur.variance.from(o.first_neighbour(x0), y + o.dy);
+                if (o.centre()) {
+                    std::fill(w.begin() + i0, w.begin() + i1, h);
+                } else {
+                    for (int i = i0; i < i1; ++i)
+                        e[i] = std::fabs(lum_p[i] - lum_q[i - i0]) * inv_p[i];
+                    features.weights_row(y, x0 + i0, o.count(), o.dx, o.dy, e.data() + i0, h,
+                                         w.data() + i0);
                 }
-            }
+                for (int i = i0; i < i1; ++i) {
+                    wsum[i] += w[i];
+                    w2var[i] += w[i] * w[i] * var_q[i - i0];
+                }
+                sums.add(w.data(), src, x0 + o.dx, y + o.dy, i0, i1);
+            });
             if (result) {
                 result->empty_windows += sums.write(result->pixel(x0, y), result->pixel_stride());
                 return;

@@ -6,6 +6,7 @@
 #include <mcdenoise/nlmeans.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
 #include "window.h"
@@ -118,14 +119,12 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                     distance_row<1>(rows, in.k2, channel_mean, m, d);
             }
             for (int y = y0; y < y1; ++y) {
-                if (y + dy < dw.ybegin || y + dy >= dw.yend)
+                const Offset o = clip_offset(dx, dy, 1, x0, n, dw);
+                if (y + dy < dw.ybegin || y + dy >= dw.yend || o.count() <= 0)
                     continue;
-                const int i0 = std::max(0, dw.xbegin - dx - x0);
-                const int i1 = std::min(n, dw.xend - dx - x0);
-                if (i0 >= i1)
-                    continue;
+                const int i0 = o.i0, i1 = o.i1;
                 WeightedSums& s = sums[size_t(y - y0)];
-                if (dx == 0 && dy == 0) {
+                if (o.centre()) {
                     std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
                     s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
                     continue;
