@@ -163,13 +163,13 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         for (size_t i = 0; i < sides.size(); ++i) {
             const int side = sides[i];
-            guided_mean_strip(sources[i], rules[i],
-                              [&](int y, Span xs, uint8_t* out) {
-                                  const int* row = map.sides.from(xs.begin, y);
-                                  for (int j = 0; j < xs.size(); ++j)
-                                      out[j] = row[j] == side;
-                              },
-                              strip, result);
+            guided_mean_chosen(sources[i], rules[i],
+                               [&](int y, Span xs, uint8_t* out) {
+                                   const int* row = map.sides.from(xs.begin, y);
+                                   for (int j = 0; j < xs.size(); ++j)
+                                       out[j] = row[j] == side;
+                               },
+                               strip, result);
         }
     });
     return finish_result(op, dst, result);
