@@ -37,6 +37,8 @@ struct PixelBlock {
     }
     /// Pointer to the first pixel of row `y`.
     const float* row(int y) const { return pixel(region.xbegin, y); }
+    /// Row `y` of a block that owns its pixels, for writing them.
+    float* owned_row(int y) { return owned.data() + (y - region.ybegin) * row_stride; }
     int width() const { return region.width(); }
     int height() const { return region.height(); }
 };

@@ -49,7 +49,6 @@ struct Plane {
     {
     }
 
-    int width() const { return region.width(); }
     /// The index of (x, y) in `values`.
     size_t offset(int x, int y) const { return pixel_offset(region, x, y); }
     /// The values from (x, y) on along row y (and the rows below).
@@ -97,7 +96,6 @@ struct Planes {
     }
 
     int nchannels() const { return int(values.size()); }
-    int width() const { return region.width(); }
     bool masked() const { return !finite.empty(); }
     /// The index of (x, y) in each plane.
     size_t offset(int x, int y) const { return pixel_offset(region, x, y); }

@@ -53,16 +53,16 @@ void WeightedSums::add(const float* w, const SumSource& src, int qx0, int qy, in
         return;
     // Pointers start at i0: the neighbours of i < i0 may lie left of the
     // source region.
-    const size_t at = src.offset(qx0 + i0, qy);
+    const int qx    = qx0 + i0;
     const int n     = i1 - i0;
     const float* wi = w + i0;
     for (int c = 0; c < m_nc; ++c) {
-        const float* v = src.values[size_t(m_c0 + c)].data() + at;
+        const float* v = src.from(m_c0 + c, qx, qy);
         float* num     = m_num.data() + size_t(c) * m_n + i0;
         for (int i = 0; i < n; ++i)
             num[i] += wi[i] * v[i];
         if (m_masked) {
-            const float* m = src.finite[size_t(m_c0 + c)].data() + at;
+            const float* m = src.finite_from(m_c0 + c, qx, qy);
             float* den     = m_den.data() + size_t(c) * m_n + i0;
             for (int i = 0; i < n; ++i)
                 den[i] += wi[i] * m[i];
