@@ -3,6 +3,7 @@
 #include <mcdenoise/atrous.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
 #include "window.h"
@@ -26,8 +27,8 @@ constexpr float luminance_guard = 1e-10f;
 // luminance and the luminance variance, as planes of the region's width.
 struct Iterate {
     SumSource values;
-    std::vector<float> luminance;
-    std::vector<float> variance;
+    Plane<float> luminance;
+    Plane<float> variance;
 };
 
 // Remaining reach of the taps before iteration i of n: sum of 2 * 2^j, j >= i.
@@ -36,37 +37,26 @@ int reach_before(int i, int n)
     return (2 << n) - (2 << i);
 }
 
-// A plane over `to` cut from a plane over `from` (which contains it).
-std::vector<float> cut_plane(const std::vector<float>& plane, const ROI& from, const ROI& to)
-{
-    std::vector<float> out(size_t(to.width()) * to.height());
-    for (int y = to.ybegin; y < to.yend; ++y)
-        std::copy_n(plane.data() + size_t(y - from.ybegin) * from.width()
-                        + size_t(to.xbegin - from.xbegin),
-                    to.width(), out.data() + size_t(y - to.ybegin) * to.width());
-    return out;
-}
-
 // 1 / (sigma_luminance sqrt(g) + guard) over `out_region`, g the 3x3
 // binomial blur of `cur.variance` clipped to `dw` and renormalised; 0
 // everywhere when the luminance weight is off.
-std::vector<float> luminance_scale(const Iterate& cur, float sigma_luminance,
-                                   const ROI& out_region, const ROI& dw, int nthreads)
+Plane<float> luminance_scale(const Iterate& cur, float sigma_luminance, const ROI& out_region,
+                             const ROI& dw, int nthreads)
 {
     static constexpr float binomial3[3] = { 1.0f, 2.0f, 1.0f };
-    std::vector<float> inv(size_t(out_region.width()) * out_region.height(), 0.0f);
+    Plane<float> inv(out_region, 0.0f);
     if (!(sigma_luminance > 0.0f))
         return inv;
     parallel_rows(out_region, nthreads, [&](int y) {
         const Span ys = clip_window(y, 1, dw.ybegin, dw.yend);
-        float* out    = inv.data() + size_t(y - out_region.ybegin) * out_region.width();
+        float* out    = inv.row(y);
         for (int x = out_region.xbegin; x < out_region.xend; ++x) {
             const Span xs = clip_window(x, 1, dw.xbegin, dw.xend);
             float sum = 0.0f, weight = 0.0f;
             for (int qy = ys.begin; qy < ys.end; ++qy)
                 for (int qx = xs.begin; qx < xs.end; ++qx) {
                     const float k = binomial3[qy - y + 1] * binomial3[qx - x + 1];
-                    sum += k * cur.variance[cur.values.offset(qx, qy)];
+                    sum += k * cur.variance.at(qx, qy);
                     weight += k;
                 }
             out[x - out_region.xbegin]
@@ -77,18 +67,18 @@ std::vector<float> luminance_scale(const Iterate& cur, float sigma_luminance,
 }
 
 // The luminance of the colour channels of `values` at each pixel of its region.
-std::vector<float> luminance_of(const SumSource& values, int ncolour, int nthreads)
+Plane<float> luminance_of(const SumSource& values, int ncolour, int nthreads)
 {
     const auto lw = luminance_weights(ncolour);
     const ROI& reg = values.region;
-    std::vector<float> lum(size_t(reg.width()) * reg.height());
+    Plane<float> lum(reg);
     parallel_rows(reg, nthreads, [&](int y) {
-        const size_t at = values.offset(reg.xbegin, y);
+        float* out = lum.row(y);
         for (int i = 0; i < reg.width(); ++i) {
             float l = 0.0f;
             for (int c = 0; c < ncolour; ++c)
-                l += lw[size_t(c)] * values.value[size_t(c)][at + i];
-            lum[at + i] = l;
+                l += lw[size_t(c)] * values.row(c, y)[i];
+            out[i] = l;
         }
     });
     return lum;
@@ -101,17 +91,13 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
                     float sigma_luminance, int ncolour, const ROI& out_region, const ROI& dw,
                     ResultPixels* result, int nthreads)
 {
-    const std::vector<float> inv
-        = luminance_scale(cur, sigma_luminance, out_region, dw, nthreads);
-    const SumSource& src = cur.values;
-    const int width = out_region.width();
+    const Plane<float> inv = luminance_scale(cur, sigma_luminance, out_region, dw, nthreads);
+    const SumSource& src   = cur.values;
     Iterate next;
     const int nch = src.nchannels();
     if (!result) {
-        next.values.region = out_region;
-        next.values.value.assign(size_t(nch),
-                                 std::vector<float>(size_t(width) * out_region.height()));
-        next.variance.resize(size_t(width) * out_region.height());
+        next.values   = SumSource(out_region, nch);
+        next.variance = Plane<float>(out_region);
     }
     parallel_rows(out_region, nthreads, [&](int y) {
         const FlushDenormals flush;
@@ -121,50 +107,39 @@ Iterate atrous_pass(const Iterate& cur, const FeatureField& features, int step,
             WeightedSums sums(c0, c1, n, src.masked());
             const size_t len = static_cast<size_t>(n);
             std::vector<float> e(len), w(len), wsum(len, 0.0f), w2var(len, 0.0f);
-            const float* lum_p = cur.luminance.data() + src.offset(x0, y);
-            const float* inv_p = inv.data() + size_t(y - out_region.ybegin) * width
-                                 + size_t(x0 - out_region.xbegin);
-            for (int ky = -tap_radius; ky <= tap_radius; ++ky) {
-                const int dy = ky * step;
-                if (y + dy < dw.ybegin || y + dy >= dw.yend)
-                    continue;
-                for (int kx = -tap_radius; kx <= tap_radius; ++kx) {
-                    const int dx = kx * step;
-                    const int i0 = std::max(0, dw.xbegin - dx - x0);
-                    const int i1 = std::min(n, dw.xend - dx - x0);
-                    if (i0 >= i1)
-                        continue;
-                    const float h = b3_spline[ky + tap_radius] * b3_spline[kx + tap_radius];
-                    // Neighbour pointers start at i0 (those of i < i0 lie outside).
-                    const size_t q = src.offset(x0 + dx + i0, y + dy);
-                    const float* lum_q = cur.luminance.data() + q;
-                    const float* var_q = cur.variance.data() + q;
-                    if (dx == 0 && dy == 0) {
-                        std::fill(w.begin() + i0, w.begin() + i1, h);
-                    } else {
-                        for (int i = i0; i < i1; ++i)
-                            e[i] = std::fabs(lum_p[i] - lum_q[i - i0]) * inv_p[i];
-                        features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, h,
-                                             w.data() + i0);
-                    }
-                    for (int i = i0; i < i1; ++i) {
-                        wsum[i] += w[i];
-                        w2var[i] += w[i] * w[i] * var_q[i - i0];
-                    }
-                    sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
+            const float* lum_p = cur.luminance.from(x0, y);
+            const float* inv_p = inv.from(x0, y);
+            for_each_offset(y, x0, n, tap_radius, step, dw, [&](const Offset& o) {
+                const int i0 = o.i0, i1 = o.i1;
+                const float h = b3_spline[o.ky + tap_radius] * b3_spline[o.kx + tap_radius];
+                // Neighbour pointers start at i0 (those of i < i0 lie outside).
+                const float* lum_q = cur.luminance.from(o.first_neighbour(x0), y + o.dy);
+                const float* var_q = cur.variance.from(o.first_neighbour(x0), y + o.dy);
+                if (o.centre()) {
+                    std::fill(w.begin() + i0, w.begin() + i1, h);
+                } else {
+                    for (int i = i0; i < i1; ++i)
+                        e[i] = std::fabs(lum_p[i] - lum_q[i - i0]) * inv_p[i];
+                    features.weights_row(y, x0 + i0, o.count(), o.dx, o.dy, e.data() + i0, h,
+                                         w.data() + i0);
                 }
-            }
+                for (int i = i0; i < i1; ++i) {
+                    wsum[i] += w[i];
+                    w2var[i] += w[i] * w[i] * var_q[i - i0];
+                }
+                sums.add(w.data(), src, x0 + o.dx, y + o.dy, i0, i1);
+            });
             if (result) {
                 result->empty_windows += sums.write(result->pixel(x0, y), result->pixel_stride());
                 return;
             }
-            const size_t at = next.values.offset(x0, y);
             std::vector<float*> planes(static_cast<size_t>(nch));
             for (int c = 0; c < nch; ++c)
-                planes[size_t(c)] = next.values.value[size_t(c)].data() + at;
+                planes[size_t(c)] = next.values.from(c, x0, y);
             sums.write_planes(planes.data());
+            float* variance = next.variance.from(x0, y);
             for (int i = 0; i < n; ++i)
-                next.variance[at + i] = w2var[i] / (wsum[i] * wsum[i]);
+                variance[i] = w2var[i] / (wsum[i] * wsum[i]);
         });
     });
     if (!result)
@@ -192,7 +167,7 @@ bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int ite
         return false;
     Iterate cur;
     cur.values    = std::move(in.values);
-    cur.luminance = cut_plane(in.colour.luminance, in.colour.region, first);
+    cur.luminance = cropped(in.colour.luminance, first);
     cur.variance  = std::move(in.variance.luminance);
     ResultPixels result;
     if (!begin_result(op, dst, beauty,

@@ -4,6 +4,7 @@
 #include <mcdenoise/cross_bilateral.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
 #include "window.h"
@@ -20,10 +21,9 @@ namespace {
 void add_colour_exponent(const ColourField& colour, float scale, int y, int x0, int n, int dx,
                          int dy, float* e)
 {
-    const size_t pc = colour.offset(x0, y), pq = colour.offset(x0 + dx, y + dy);
-    for (const std::vector<float>& plane : colour.colour) {
-        const float* a = plane.data() + pc;
-        const float* b = plane.data() + pq;
+    for (int c = 0; c < colour.nchannels(); ++c) {
+        const float* a = colour.colour.from(c, x0, y);
+        const float* b = colour.colour.from(c, x0 + dx, y + dy);
         for (int i = 0; i < n; ++i) {
             const float t = a[i] - b[i];
             e[i] += scale * (t * t);
@@ -74,30 +74,21 @@ bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
             WeightedSums sums(0, src.nchannels(), n, src.masked());
             const size_t len = static_cast<size_t>(n);
             std::vector<float> e(len), w(len);
-            for (int dy = -r; dy <= r; ++dy) {
-                if (y + dy < dw.ybegin || y + dy >= dw.yend)
-                    continue;
-                for (int dx = -r; dx <= r; ++dx) {
-                    // Pixels i0 .. i1 have their neighbour inside the data window.
-                    const int i0 = std::max(0, dw.xbegin - dx - x0);
-                    const int i1 = std::min(n, dw.xend - dx - x0);
-                    if (i0 >= i1)
-                        continue;
-                    const int m = i1 - i0, xa = x0 + i0;
-                    if (dx == 0 && dy == 0) {
-                        std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
-                    } else {
-                        std::fill(e.begin() + i0, e.begin() + i1,
-                                  spatial_scale * float(dx * dx + dy * dy));
-                        if (by_color)
-                            add_colour_exponent(colour, colour_scale, y, xa, m, dx, dy,
-                                                e.data() + i0);
-                        features.weights_row(y, xa, m, dx, dy, e.data() + i0, 1.0f,
-                                             w.data() + i0);
-                    }
-                    sums.add(w.data(), src, x0 + dx, y + dy, i0, i1);
+            for_each_offset(y, x0, n, r, 1, dw, [&](const Offset& o) {
+                const int xa = x0 + o.i0;
+                if (o.centre()) {
+                    std::fill(w.begin() + o.i0, w.begin() + o.i1, 1.0f);
+                } else {
+                    std::fill(e.begin() + o.i0, e.begin() + o.i1,
+                              spatial_scale * float(o.dx * o.dx + o.dy * o.dy));
+                    if (by_color)
+                        add_colour_exponent(colour, colour_scale, y, xa, o.count(), o.dx, o.dy,
+                                            e.data() + o.i0);
+                    features.weights_row(y, xa, o.count(), o.dx, o.dy, e.data() + o.i0, 1.0f,
+                                         w.data() + o.i0);
                 }
-            }
+                sums.add(w.data(), src, x0 + o.dx, y + o.dy, o.i0, o.i1);
+            });
             result.empty_windows += sums.write(result.pixel(x0, y), result.pixel_stride());
         });
     });

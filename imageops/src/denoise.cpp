@@ -63,20 +63,16 @@ bool estimated_variance(ImageBuf& dst, const ImageBuf& clamped, const ROI& regio
         return false;
     const int nc = colour.nchannels();
     variance.reset(OIIO::ImageSpec(colour_roi, OIIO::TypeDesc::FLOAT));
-    const size_t w = size_t(region.width());
     parallel_rows(region, nthreads, [&](int y) {
         const Span ys = clip_window(y, 1, region.ybegin, region.yend);
         for (int x = region.xbegin; x < region.xend; ++x) {
             const Span xs = clip_window(x, 1, region.xbegin, region.xend);
             float* out    = static_cast<float*>(variance.pixeladdr(x, y));
             for (int c = 0; c < nc; ++c) {
-                const std::vector<float>& plane = sample.colour[size_t(c)];
-                float smallest = plane[size_t(ys.begin - region.ybegin) * w
-                                       + size_t(xs.begin - region.xbegin)];
+                float smallest = *sample.colour.from(c, xs.begin, ys.begin);
                 for (int qy = ys.begin; qy < ys.end; ++qy)
                     for (int qx = xs.begin; qx < xs.end; ++qx)
-                        smallest = std::min(smallest, plane[size_t(qy - region.ybegin) * w
-                                                            + size_t(qx - region.xbegin)]);
+                        smallest = std::min(smallest, *sample.colour.from(c, qx, qy));
                 out[c] = smallest;
             }
         }

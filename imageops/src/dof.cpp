@@ -17,16 +17,8 @@ namespace {
 
 // The window side of every pixel of `roi`, from its depth level.
 struct FocusMap {
-    ROI roi;
-    std::vector<int> sides;
+    Plane<int> sides;
     int largest = 1;
-
-    int at(int x, int y) const { return *from(x, y); }
-    /// The sides from (x, y) on along row y.
-    const int* from(int x, int y) const
-    {
-        return sides.data() + size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin);
-    }
 };
 
 bool check_levels(const char* op, ImageBuf& dst, int levels, int focus_level)
@@ -50,7 +42,7 @@ bool check_levels(const char* op, ImageBuf& dst, int levels, int focus_level)
 // The smallest and largest finite depths of the plane (the depth over the
 // image's data window), so that a pixel's level depends neither on the ROI
 // nor on how far the depth guide's data window reaches past the image.
-std::pair<double, double> depth_range(const GuidePlane<float>& all)
+std::pair<double, double> depth_range(const Plane<float>& all)
 {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (float d : all.values)
@@ -67,7 +59,7 @@ bool focus_map(const char* op, ImageBuf& dst, const ImageBuf& depth, int levels,
                int focus_level, float depth_near, float depth_far, const ROI& roi,
                const ROI& image, int nthreads, FocusMap& map)
 {
-    GuidePlane<float> all;
+    Plane<float> all;
     if (!check_levels(op, dst, levels, focus_level)
         || !check_guide(op, "depth", dst, depth, 1, roi)
         || !load_depths(op, dst, depth, OIIO::roi_intersection(image, depth.roi()), nthreads,
@@ -76,8 +68,7 @@ bool focus_map(const char* op, ImageBuf& dst, const ImageBuf& depth, int levels,
     const bool explicit_range = depth_far > depth_near;
     auto [lo, hi] = explicit_range ? std::make_pair(double(depth_near), double(depth_far))
                                    : depth_range(all);
-    map.roi = roi;
-    map.sides.resize(size_t(roi.width()) * roi.height());
+    map.sides = Plane<int>(roi);
     for (int y = roi.ybegin; y < roi.yend; ++y)
         for (int x = roi.xbegin; x < roi.xend; ++x) {
             const double d = all.at(x, y);
@@ -89,7 +80,7 @@ bool focus_map(const char* op, ImageBuf& dst, const ImageBuf& depth, int levels,
                 level = 0;
             }
             const int side = 1 + 2 * std::abs(level - focus_level);
-            map.sides[size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin)] = side;
+            map.sides.at(x, y) = side;
             map.largest = std::max(map.largest, side);
         }
     return true;
@@ -113,7 +104,7 @@ bool dof_focus_map(ImageBuf& dst, const ImageBuf& depth, int levels, int focus_l
         return false;
     for (int y = roi.ybegin; y < roi.yend; ++y)
         for (int x = roi.xbegin; x < roi.xend; ++x)
-            *result.pixel(x, y) = float(map.at(x, y));
+            *result.pixel(x, y) = float(map.sides.at(x, y));
     return finish_result(op, dst, result);
 }
 
@@ -143,7 +134,8 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     // then gets its own kernel and uniform-window map over the same pixels.
     std::vector<int> sides;
     for (int side = 1; side <= map.largest; side += 2)
-        if (std::find(map.sides.begin(), map.sides.end(), side) != map.sides.end())
+        if (std::find(map.sides.values.begin(), map.sides.values.end(), side)
+            != map.sides.values.end())
             sides.push_back(side);
     ROI region = roi;
     for (int side : sides) {
@@ -171,13 +163,13 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         for (size_t i = 0; i < sides.size(); ++i) {
             const int side = sides[i];
-            guided_mean_strip(sources[i], rules[i],
-                              [&](int y, Span xs, uint8_t* out) {
-                                  const int* row = map.from(xs.begin, y);
-                                  for (int j = 0; j < xs.size(); ++j)
-                                      out[j] = row[j] == side;
-                              },
-                              strip, result);
+            guided_mean_chosen(sources[i], rules[i],
+                               [&](int y, Span xs, uint8_t* out) {
+                                   const int* row = map.sides.from(xs.begin, y);
+                                   for (int j = 0; j < xs.size(); ++j)
+                                       out[j] = row[j] == side;
+                               },
+                               strip, result);
         }
     });
     return finish_result(op, dst, result);

@@ -33,30 +33,23 @@ float feature_scale(float sigma)
     return float(1.0 / (double(sigma) * std::sqrt(2.0)));
 }
 
-// An uninitialised-free plane of `region`'s pixel count.
-std::vector<float> plane_of(const ROI& region)
-{
-    return std::vector<float>(size_t(region.width()) * region.height());
-}
-
 // The region's pixels, row by row, with offsets into a plane of its width.
 template<class Fn>
 void for_each_pixel(const ROI& region, int nthreads, Fn&& fn)
 {
     parallel_rows(region, nthreads, [&](int y) {
-        size_t i = size_t(y - region.ybegin) * region.width();
+        size_t i = pixel_offset(region, region.xbegin, y);
         for (int x = region.xbegin; x < region.xend; ++x, ++i)
             fn(x, y, i);
     });
 }
 
-// Sample variance (divided by n - 1, 0 for n == 1) of `plane` over the
-// 3x3 window around each pixel of `region`, clipped to `bounds`; `plane`
-// covers `src` (which holds every such window).
-void estimate_variance(const float* plane, const ROI& src, const ROI& region,
-                       const ROI& bounds, int nthreads, float* out)
+// Sample variance (divided by n - 1, 0 for n == 1) of `at(x, y)` over the
+// 3x3 window around each pixel of `region`, clipped to `bounds` (`at` reads
+// every such window), into `out`, a plane over `region`.
+template<class At>
+void estimate_variance(At&& at, const ROI& region, const ROI& bounds, int nthreads, float* out)
 {
-    const int w = src.width();
     for_each_pixel(region, nthreads, [&](int x, int y, size_t i) {
         const Span xs = clip_window(x, 1, bounds.xbegin, bounds.xend);
         const Span ys = clip_window(y, 1, bounds.ybegin, bounds.yend);
@@ -64,13 +57,12 @@ void estimate_variance(const float* plane, const ROI& src, const ROI& region,
         double sum    = 0.0;
         for (int qy = ys.begin; qy < ys.end; ++qy)
             for (int qx = xs.begin; qx < xs.end; ++qx)
-                sum += plane[size_t(qy - src.ybegin) * w + size_t(qx - src.xbegin)];
+                sum += at(qx, qy);
         const double mean = sum / n;
         double sq         = 0.0;
         for (int qy = ys.begin; qy < ys.end; ++qy)
             for (int qx = xs.begin; qx < xs.end; ++qx) {
-                const double d = plane[size_t(qy - src.ybegin) * w + size_t(qx - src.xbegin)]
-                                 - mean;
+                const double d = at(qx, qy) - mean;
                 sq += d * d;
             }
         out[i] = n > 1 ? float(sq / (n - 1)) : 0.0f;
@@ -107,8 +99,7 @@ bool load_guide_channels(const char* op, ImageBuf& dst, const ImageBuf& guide,
     ROI inside   = OIIO::roi_intersection(region, dw);
     inside.chbegin = 0;
     inside.chend   = guide.nchannels();
-    out.region     = region;
-    out.planes.assign(size_t(guide.nchannels()), plane_of(region));
+    out            = GuideChannels(region, guide.nchannels(), 0.0f);
     if (!inside.defined() || inside.npixels() == 0)
         return true;
     PixelBlock block;
@@ -119,11 +110,10 @@ bool load_guide_channels(const char* op, ImageBuf& dst, const ImageBuf& guide,
     const int nc = block.nchannels;
     parallel_rows(inside, nthreads, [&](int y) {
         const float* in = block.row(y);
-        const size_t at = size_t(y - region.ybegin) * region.width()
-                          + size_t(inside.xbegin - region.xbegin);
+        const size_t at = out.offset(inside.xbegin, y);
         for (int i = 0; i < inside.width(); ++i, in += nc)
             for (int c = 0; c < nc; ++c)
-                out.planes[size_t(c)][at + i] = std::isfinite(in[c]) ? in[c] : 0.0f;
+                out.values[size_t(c)][at + i] = std::isfinite(in[c]) ? in[c] : 0.0f;
     });
     return true;
 }
@@ -132,16 +122,14 @@ void FeatureField::weights_row(int y, int x0, int n, int dx, int dy, const float
                                float scale, float* w) const
 {
     using OIIO::simd::vfloat8;
-    const size_t width = size_t(region.width());
-    const size_t pc = size_t(y - region.ybegin) * width + size_t(x0 - region.xbegin);
-    const size_t pq = size_t(y + dy - region.ybegin) * width + size_t(x0 + dx - region.xbegin);
+    const size_t pc = dims.offset(x0, y), pq = dims.offset(x0 + dx, y + dy);
     const vfloat8 s(scale);
-    const bool by_id = !id_keys.empty();
-    const int32_t* ka = by_id ? id_keys.data() + pc : nullptr;
-    const int32_t* kb = by_id ? id_keys.data() + pq : nullptr;
+    const bool by_id = !ids.values.empty();
+    const Id* ka     = by_id ? ids.values.data() + pc : nullptr;
+    const Id* kb     = by_id ? ids.values.data() + pq : nullptr;
     for_each_lane_block(n, w, [&](int, auto&& load) {
         vfloat8 x = load(e);
-        for (const std::vector<float>& dim : dims) {
+        for (const LargeVector<float>& dim : dims.values) {
             const vfloat8 t = load(dim.data() + pc) - load(dim.data() + pq);
             x = x + t * t;
         }
@@ -154,24 +142,20 @@ bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
                         const FeatureSigmas& sigmas, const ROI& region, int nthreads,
                         FeatureField& field)
 {
-    field.region = region;
-    field.dims.clear();
-    field.id_keys.clear();
-    if (guides.object_id) {
-        IdPlane ids;
-        if (!load_object_ids(op, dst, *guides.object_id, region, nthreads, ids))
-            return false;
-        field.id_keys.assign(ids.values.begin(), ids.values.end());
-    }
+    field.dims = Planes<float>(region, 0);
+    field.ids  = IdPlane();
+    if (guides.object_id
+        && !load_object_ids(op, dst, *guides.object_id, region, nthreads, field.ids))
+        return false;
     if (guides.albedo && sigmas.albedo > 0.0f) {
         GuideChannels albedo;
         if (!load_guide_channels(op, dst, *guides.albedo, region, nthreads, albedo))
             return false;
         const float s = feature_scale(sigmas.albedo);
-        for (std::vector<float>& plane : albedo.planes) {
+        for (LargeVector<float>& plane : albedo.values) {
             for (float& v : plane)
                 v *= s;
-            field.dims.push_back(std::move(plane));
+            field.dims.values.push_back(std::move(plane));
         }
     }
     if (guides.normal && sigmas.normal > 0.0f) {
@@ -179,23 +163,21 @@ bool load_feature_field(const char* op, ImageBuf& dst, const Guides& guides,
         if (!load_normals(op, dst, *guides.normal, region, nthreads, normals))
             return false;
         const float s = feature_scale(sigmas.normal);
-        for (const LargeVector<float>* component : { &normals.x, &normals.y, &normals.z }) {
-            std::vector<float> plane = plane_of(region);
-            for (size_t i = 0; i < plane.size(); ++i)
-                plane[i] = (*component)[i] * s;
-            field.dims.push_back(std::move(plane));
+        for (LargeVector<float>& plane : normals.components.values) {
+            for (float& v : plane)
+                v *= s;
+            field.dims.values.push_back(std::move(plane));
         }
     }
     if (guides.depth && sigmas.depth > 0.0f) {
-        GuidePlane<float> depths;
+        Plane<float> depths;
         if (!load_depths(op, dst, *guides.depth, region, nthreads, depths))
             return false;
         const float s = feature_scale(sigmas.depth);
-        std::vector<float> z = plane_of(region);
         for_each_pixel(region, nthreads, [&](int, int, size_t i) {
-            z[i] = log_depth(depths.values[i]) * s;
+            depths.values[i] = log_depth(depths.values[i]) * s;
         });
-        field.dims.push_back(std::move(z));
+        field.dims.values.push_back(std::move(depths.values));
     }
     return true;
 }
@@ -212,21 +194,18 @@ std::array<float, feature_colour_channels> luminance_weights(int nc)
 
 ColourField colour_field(const PixelBlock& block, const ROI& region, int nthreads)
 {
-    ColourField field;
-    field.region   = region;
-    const int nc   = colour_channels(block.nchannels);
-    const auto lw  = luminance_weights(nc);
-    field.colour.assign(size_t(nc), plane_of(region));
-    field.luminance = plane_of(region);
+    const int nc  = colour_channels(block.nchannels);
+    const auto lw = luminance_weights(nc);
+    ColourField field { Planes<float>(region, nc), Plane<float>(region) };
     for_each_pixel(region, nthreads, [&](int x, int y, size_t i) {
         const float* v = block.pixel(x, y);
         float lum      = 0.0f;
         for (int c = 0; c < nc; ++c) {
             const float u = std::isfinite(v[c]) ? v[c] : 0.0f;
-            field.colour[size_t(c)][i] = u;
+            field.colour.values[size_t(c)][i] = u;
             lum += lw[size_t(c)] * u;
         }
-        field.luminance[i] = lum;
+        field.luminance.values[i] = lum;
     });
     return field;
 }
@@ -237,15 +216,13 @@ bool load_variance(const char* op, ImageBuf& dst, const ImageBuf* variance,
 {
     const int nc  = colour.nchannels();
     const auto lw = luminance_weights(nc);
-    out.region    = region;
-    out.colour.assign(size_t(nc), plane_of(region));
-    out.luminance = plane_of(region);
+    out           = VarianceField { Planes<float>(region, nc), Plane<float>(region) };
     if (!variance) {
         for (int c = 0; c < nc; ++c)
-            estimate_variance(colour.colour[size_t(c)].data(), colour.region, region,
-                              data_window, nthreads, out.colour[size_t(c)].data());
-        estimate_variance(colour.luminance.data(), colour.region, region, data_window,
-                          nthreads, out.luminance.data());
+            estimate_variance([&](int x, int y) { return *colour.colour.from(c, x, y); },
+                              region, data_window, nthreads, out.colour.values[size_t(c)].data());
+        estimate_variance([&](int x, int y) { return colour.luminance.at(x, y); }, region,
+                          data_window, nthreads, out.luminance.values.data());
         return true;
     }
     GuideChannels given;
@@ -255,11 +232,11 @@ bool load_variance(const char* op, ImageBuf& dst, const ImageBuf* variance,
         float lum = 0.0f;
         for (int c = 0; c < nc; ++c) {
             const int k   = std::min(c, given.nchannels() - 1);
-            const float v = std::max(0.0f, given.planes[size_t(k)][i]);
-            out.colour[size_t(c)][i] = v;
+            const float v = std::max(0.0f, given.values[size_t(k)][i]);
+            out.colour.values[size_t(c)][i] = v;
             lum += lw[size_t(c)] * lw[size_t(c)] * v;
         }
-        out.luminance[i] = lum;
+        out.luminance.values[i] = lum;
     });
     return true;
 }

@@ -11,8 +11,6 @@
 #include "weighted_sums.h"
 
 #include <array>
-#include <cstdint>
-#include <vector>
 
 namespace mcdenoise {
 
@@ -26,20 +24,9 @@ bool check_colour_guide(const char* op, const char* name, OIIO::ImageBuf& dst,
 bool check_feature_guides(const char* op, OIIO::ImageBuf& dst, const Guides& guides,
                           const OIIO::ROI& roi);
 
-/// Channel planes of a guide over `region`, row-major, width
-/// `region.width()`: non-finite values and pixels outside the guide's data
-/// window as 0.
-struct GuideChannels {
-    OIIO::ROI region;
-    std::vector<std::vector<float>> planes;
-
-    int nchannels() const { return int(planes.size()); }
-    /// The values of channel `c` in row `y`, from `region.xbegin`.
-    const float* row(int c, int y) const
-    {
-        return planes[size_t(c)].data() + size_t(y - region.ybegin) * region.width();
-    }
-};
+/// Channel planes of a guide over a region: non-finite values and pixels
+/// outside the guide's data window as 0.
+using GuideChannels = Planes<float>;
 
 /// Read every channel of `guide` over `region` as `GuideChannels`.
 bool load_guide_channels(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& guide,
@@ -50,16 +37,15 @@ bool load_guide_channels(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageB
 /// `(A + N + Z) / 2` is the squared distance of the feature vectors, plus
 /// the object ids when given.
 struct FeatureField {
-    OIIO::ROI region;
-    std::vector<std::vector<float>> dims;
-    /// Object ids (as `load_object_ids` gives them), row-major over
-    /// `region`; empty without an object id guide.
-    std::vector<int32_t> id_keys;
+    Planes<float> dims;
+    /// Object ids (as `load_object_ids` gives them) over the dims' region;
+    /// no values without an object id guide.
+    IdPlane ids;
 
     /// The weights of center (x0 + i, y) and neighbour (x0 + i + dx, y + dy)
     /// for i < n: `w[i] = scale * exp(-(e[i] + (A + N + Z) / 2))`, where
     /// `e` holds the filter's own exponent, 0 past `max_weight_exponent`
-    /// and 0 across object ids. Both pixels must lie in `region`.
+    /// and 0 across object ids. Both pixels must lie in the dims' region.
     void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
                      float* w) const;
 };
@@ -70,19 +56,18 @@ bool load_feature_field(const char* op, OIIO::ImageBuf& dst, const Guides& guide
                         const FeatureSigmas& sigmas, const OIIO::ROI& region, int nthreads,
                         FeatureField& field);
 
-/// The colour of features.h (the first three channels, non-finite as 0)
-/// and its luminance over a region, as planes of width `region.width()`.
-struct ColourField {
-    OIIO::ROI region;
-    std::vector<std::vector<float>> colour;
-    std::vector<float> luminance;
+/// Colour channel planes and a luminance plane over one region.
+struct ColourPlanes {
+    Planes<float> colour;
+    Plane<float> luminance;
 
-    int nchannels() const { return int(colour.size()); }
-    size_t offset(int x, int y) const
-    {
-        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
-    }
+    int nchannels() const { return colour.nchannels(); }
+    const OIIO::ROI& region() const { return luminance.region; }
 };
+
+/// The colour of features.h (the first three channels, non-finite as 0)
+/// and its luminance over a region.
+using ColourField = ColourPlanes;
 
 /// The luminance weights of features.h for `nc` colour channels.
 std::array<float, feature_colour_channels> luminance_weights(int nc);
@@ -97,13 +82,8 @@ inline int colour_channels(int nchannels)
 /// (inside the block).
 ColourField colour_field(const PixelBlock& block, const OIIO::ROI& region, int nthreads);
 
-/// Per-pixel variance of the colour channels and of the luminance, as
-/// planes of width `region.width()`.
-struct VarianceField {
-    OIIO::ROI region;
-    std::vector<std::vector<float>> colour;
-    std::vector<float> luminance;
-};
+/// Per-pixel variance of the colour channels and of the luminance.
+using VarianceField = ColourPlanes;
 
 /// The variance of features.h over `region`: from `variance` when given
 /// (checked with `check_feature_guides`), else estimated from `colour`,

@@ -3,6 +3,7 @@
 #include <mcdenoise/fireflies.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "window.h"
 
@@ -29,7 +30,7 @@ inline size_t percentile_rank(size_t n) { return (3 * (n - 1)) / 4; }
 float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, int radius,
                   int x, int y, std::vector<float>& scratch)
 {
-    const ROI& reg   = colour.region;
+    const ROI& reg   = colour.region();
     const Span xs    = clip_window(x, radius, reg.xbegin, reg.xend);
     const Span ys    = clip_window(y, radius, reg.ybegin, reg.yend);
     const Id id = ids ? ids->at(x, y) : 0;
@@ -37,14 +38,14 @@ float clamp_scale(const ColourField& colour, const IdPlane* ids, float factor, i
     for (int qy = ys.begin; qy < ys.end; ++qy)
         for (int qx = xs.begin; qx < xs.end; ++qx)
             if ((qx != x || qy != y) && (!ids || ids->at(qx, qy) == id))
-                scratch[n++] = colour.luminance[colour.offset(qx, qy)];
+                scratch[n++] = colour.luminance.at(qx, qy);
     if (n == 0)
         return 1.0f;
     const size_t k = percentile_rank(n);
     std::nth_element(scratch.begin(), scratch.begin() + std::ptrdiff_t(k),
                      scratch.begin() + std::ptrdiff_t(n));
     const float bound = factor * scratch[k];
-    const float lum   = colour.luminance[colour.offset(x, y)];
+    const float lum   = colour.luminance.at(x, y);
     if (!(lum > bound))
         return 1.0f;
     return bound > 0.0f ? bound / lum : 0.0f;
@@ -59,43 +60,34 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
                    const ROI& roi, int y, std::vector<uint16_t>& count,
                    std::vector<uint16_t>& viable, std::vector<uint8_t>& suspect)
 {
-    const ROI& reg = colour.region;
-    const int w    = roi.width();
+    const int w = roi.width();
     std::fill(count.begin(), count.end(), uint16_t(0));
     std::fill(viable.begin(), viable.end(), uint16_t(0));
-    const float* lp = colour.luminance.data() + colour.offset(roi.xbegin, y);
-    for (int dy = -radius; dy <= radius; ++dy) {
-        if (y + dy < reg.ybegin || y + dy >= reg.yend)
-            continue;
-        for (int dx = -radius; dx <= radius; ++dx) {
-            if (dx == 0 && dy == 0)
-                continue;
-            const int i0 = std::max(0, reg.xbegin - dx - roi.xbegin);
-            const int i1 = std::min(w, reg.xend - dx - roi.xbegin);
-            if (i0 >= i1)
-                continue;
-            // Pointers start at i0: the neighbour of i < i0 lies outside.
-            const int n = i1 - i0, xq = roi.xbegin + i0 + dx;
-            const float* p  = lp + i0;
-            const float* q  = colour.luminance.data() + colour.offset(xq, y + dy);
-            uint16_t* c     = count.data() + i0;
-            uint16_t* v     = viable.data() + i0;
-            if (!ids) {
-                for (int i = 0; i < n; ++i) {
-                    v[i] += 1;
-                    c[i] += uint16_t(factor * q[i] >= p[i]);
-                }
-                continue;
-            }
-            const Id* ip = &ids->at(roi.xbegin + i0, y);
-            const Id* iq = &ids->at(xq, y + dy);
+    const float* lp = colour.luminance.from(roi.xbegin, y);
+    for_each_offset(y, roi.xbegin, w, radius, 1, colour.region(), [&](const Offset& o) {
+        if (o.centre())
+            return;
+        // Pointers start at i0: the neighbour of i < i0 lies outside.
+        const int n = o.count(), xq = o.first_neighbour(roi.xbegin);
+        const float* p  = lp + o.i0;
+        const float* q  = colour.luminance.from(xq, y + o.dy);
+        uint16_t* c     = count.data() + o.i0;
+        uint16_t* v     = viable.data() + o.i0;
+        if (!ids) {
             for (int i = 0; i < n; ++i) {
-                const uint16_t same = uint16_t(ip[i] == iq[i]);
-                v[i] += same;
-                c[i] += uint16_t(same & uint16_t(factor * q[i] >= p[i]));
+                v[i] += 1;
+                c[i] += uint16_t(factor * q[i] >= p[i]);
             }
+            return;
         }
-    }
+        const Id* ip = ids->from(roi.xbegin + o.i0, y);
+        const Id* iq = ids->from(xq, y + o.dy);
+        for (int i = 0; i < n; ++i) {
+            const uint16_t same = uint16_t(ip[i] == iq[i]);
+            v[i] += same;
+            c[i] += uint16_t(same & uint16_t(factor * q[i] >= p[i]));
+        }
+    });
     for (int i = 0; i < w; ++i) {
         const size_t n = viable[size_t(i)];
         suspect[size_t(i)] = n > 0 && count[size_t(i)] < n - percentile_rank(n);

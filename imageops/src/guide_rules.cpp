@@ -15,9 +15,8 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
     // compiler vectorises; then both directions folded into one bit per key.
     constexpr uint8_t right_pairs = 0x0f, lower_pairs = 0xf0;
     const OIIO::ROI& reg = changes.region;
-    const int w = reg.width();
     const int x0 = std::max(reg.xbegin, roi.xbegin - r), x1 = std::min(reg.xend, roi.xend + r);
-    UniformMap map { roi, LargeVector<KeyBits>(size_t(roi.width()) * roi.height()) };
+    UniformMap map(roi);
     parallel_rows(roi, nthreads, [&, r](int y) {
         // Columns x0 .. x1 at offset r, zero padding r wide on both sides;
         // bounds copied locally so the byte stores cannot alias them.
@@ -27,12 +26,11 @@ UniformMap uniform_map(const KeyChanges& changes, const OIIO::ROI& roi, int r, i
         const Span ys = clip_window(y, r, reg.ybegin, reg.yend);
         for (int yy = ys.begin; yy < ys.end; ++yy) {
             const uint8_t keep = yy < y + r ? uint8_t(0xff) : right_pairs;
-            const uint8_t* f
-                = changes.flags.data() + size_t(yy - reg.ybegin) * w + (x0 - reg.xbegin);
+            const uint8_t* f   = changes.from(x0, yy);
             for (int i = 0; i < nx; ++i)
                 any[i] |= f[i] & keep;
         }
-        KeyBits* out = map.changed.data() + size_t(y - roi.ybegin) * n;
+        KeyBits* out = map.row(y);
         const uint8_t* from = any + (roi.xbegin - x0) - r;  // window start of roi.xbegin
         std::fill(out, out + n, KeyBits(0));
         for (int d = 0; d < 2 * r; ++d)

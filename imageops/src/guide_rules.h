@@ -16,16 +16,11 @@ namespace mcdenoise {
 /// key k in bit k.
 using KeyBits = uint8_t;
 
-/// Per ROI pixel, the keys that change somewhere in its window.
-struct UniformMap {
-    OIIO::ROI roi;
-    LargeVector<KeyBits> changed;
+/// Per ROI pixel (the plane's region), the keys that change somewhere in
+/// its window.
+struct UniformMap : Plane<KeyBits> {
+    using Plane<KeyBits>::Plane;
 
-    /// The keys changing in the windows of (x, y) and the pixels after it.
-    const KeyBits* from(int x, int y) const
-    {
-        return changed.data() + size_t(y - roi.ybegin) * roi.width() + size_t(x - roi.xbegin);
-    }
     /// For the pixels of row `y` along `xs`: 1 where the window holds one
     /// value of every key in `keys`, into `out`.
     void uniform_row(int y, Span xs, KeyBits keys, uint8_t* out) const
@@ -39,10 +34,7 @@ struct UniformMap {
 /// Where keys change over `region`: per pixel, bit k set when key k differs
 /// from the right neighbour's, bit 4 + k when it differs from the one below
 /// (pairs leaving `region` never change).
-struct KeyChanges {
-    OIIO::ROI region;
-    LargeVector<uint8_t> flags;
-};
+using KeyChanges = Plane<uint8_t>;
 
 /// The key changes of `region`; `differ(i, j)` gives the keys that differ
 /// between flat row-major indices i and j of `region`.
@@ -104,8 +96,8 @@ SameObject same_object_rule(const IdPlane& ids, const KeyChanges& changes,
 template<class Differ>
 KeyChanges key_changes(const OIIO::ROI& region, int nthreads, Differ&& differ)
 {
-    KeyChanges changes { region, LargeVector<uint8_t>(region.npixels()) };
-    uint8_t* flags = changes.flags.data();
+    KeyChanges changes(region);
+    uint8_t* flags = changes.values.data();
     parallel_rows(region, nthreads, [&region, flags, differ](int ay) {
         // Local copies (of `differ` too): byte stores could otherwise alias
         // the bounds and the planes `differ` reads.

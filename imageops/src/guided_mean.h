@@ -1,17 +1,15 @@
-// guided_mean.h: the one window walker for weighted-mean filters. A filter
-// is a rule: which neighbours are viable and with what guide weight. Pixels
-// whose whole window is viable with weight 1 take the separable fast path;
-// the others are summed window column by window column, each column once
-// for a run of pixels whose weights depend on one center key (object id),
-// or, where every pixel has its own key, for all of a run's pixels at once.
+// guided_mean.h: the window sums of the weighted-mean walker
+// (guided_strip.h) for the pixels off its fast paths. A filter is a rule:
+// which neighbours are viable and with what guide weight. Such pixels are
+// summed window column by window column, each column once for a run of
+// pixels whose weights depend on one center key (object id), or, where
+// every pixel has its own key, for all of a run's pixels at once.
 #pragma once
 
 #include "dot_weighted_mean.h"
 #include "separable_mean.h"
 #include "window.h"
 
-#include <cstring>
-#include <type_traits>
 #include <vector>
 
 namespace mcdenoise {
@@ -226,150 +224,6 @@ int guided_mean_lanes(const SeparableSource& src, const Rule& rule, int xb, int 
             empty += !any;
         }
     return empty;
-}
-
-/// The index of the first byte equal to `value` in [from, n) of `bytes`,
-/// or n (a SIMD scan: memchr).
-inline int next_byte(const uint8_t* bytes, int from, int n, uint8_t value)
-{
-    const void* p = from < n ? std::memchr(bytes + from, value, size_t(n - from)) : nullptr;
-    return p ? int(static_cast<const uint8_t*>(p) - bytes) : n;
-}
-
-/// The end of the fast segment that starts at the uniform pixel `first` of
-/// a row's `uniform` flags (n of them): one past its last uniform pixel,
-/// where the next uniform pixel lies more than `gap` pixels beyond it.
-inline int fast_segment_end(const uint8_t* uniform, int first, int n, int gap)
-{
-    int end = first + 1;
-    while (end < n) {
-        const int hole = next_byte(uniform, end, n, 0);
-        const int next = next_byte(uniform, hole, n, 1);
-        if (next == n || next - (hole - 1) > gap)
-            return hole;
-        end = next + 1;
-    }
-    return end;
-}
-
-/// True for a rule whose guide weight is, on some windows, the dot product
-/// of the center's and the neighbour's vectors: it provides
-/// `smooth_row(y, xs, out)` (1 where (x, y)'s window is one of them) and
-/// `dot_vectors()` (the plane of those vectors).
-template<class Rule, class = void>
-struct has_dot_weights : std::false_type {};
-template<class Rule>
-struct has_dot_weights<Rule, std::void_t<decltype(&Rule::smooth_row)>> : std::true_type {};
-
-/// The guided weighted mean over the pixels of `strip` that `select` picks
-/// (`select(y, xs, out)` sets out[x - xs.begin] to 1 for the pixels (x, y)
-/// to filter, 0 for the others). Pixels whose windows `rule.uniform_row`
-/// marks wholly viable with weight 1 come from the separable fast path; the
-/// others, where the rule has dot weights and the window is smooth, from
-/// `dot_weighted_means`; the rest from `guided_mean_run`, in runs of equal
-/// `rule.key(x, y)` (a value whose equality implies equal guide weights),
-/// or from `guided_mean_lanes` where consecutive pixels each have their own
-/// key (the results are the same either way). Rows with no selected
-/// pixel are skipped. With `AllSelected`, fast rows are written straight
-/// into `result` and only the other pixels are overwritten.
-template<bool AllSelected = false, class Rule, class Select>
-void guided_mean_strip(const SeparableSource& src, const Rule& rule, Select&& select,
-                       const OIIO::ROI& strip, ResultPixels& result)
-{
-    const int nc = src.nchannels, w = strip.width();
-    SeparableMeanRows fast(src, strip);
-    std::vector<float> fast_row(AllSelected ? 0 : size_t(w) * nc);
-    std::vector<uint8_t> fast_empty(static_cast<size_t>(w));
-    std::vector<uint8_t> uniform(static_cast<size_t>(w));
-    std::vector<uint8_t> chosen(static_cast<size_t>(w), 1);
-    std::vector<uint8_t> done(static_cast<size_t>(w));  // fast, or not chosen
-    GuidedScratch scratch(w + 2 * src.kernel.radius, src.block().nchannels);
-    LaneScratch lanes(w, src.block().nchannels);
-    std::vector<uint8_t> smooth(has_dot_weights<Rule>::value ? size_t(w) : 0);
-    DotScratch dot_scratch;
-    const OIIO::ROI& reg = src.block().region;
-    const std::ptrdiff_t stride = result.pixel_stride();
-    int64_t empty = 0;
-    for (int y = strip.ybegin; y < strip.yend; ++y) {
-        if constexpr (!AllSelected) {
-            select(y, Span { strip.xbegin, strip.xend }, chosen.data());
-            int any_selected = 0;
-            for (int i = 0; i < w; ++i)
-                any_selected |= chosen[size_t(i)];
-            if (!any_selected)
-                continue;
-        }
-        rule.uniform_row(y, Span { strip.xbegin, strip.xend }, uniform.data());
-        for (int i = 0; i < w; ++i) {
-            uniform[size_t(i)] &= chosen[size_t(i)];
-            done[size_t(i)] = uniform[size_t(i)] | !chosen[size_t(i)];
-        }
-        float* out_row = result.pixel(strip.xbegin, y);
-        // The fast pixels in segments: a gap wider than a window's reach
-        // (which every segment sums again) starts a new one.
-        const int gap = 2 * src.kernel.radius + 16;
-        for (int first = next_byte(uniform.data(), 0, w, 1); first < w;) {
-            const int end   = fast_segment_end(uniform.data(), first, w, gap);
-            const Span segment { strip.xbegin + first, strip.xbegin + end };
-            const int64_t segment_empty
-                = AllSelected ? fast.row(y, segment, out_row, stride, fast_empty.data())
-                              : fast.row(y, segment, fast_row.data(), nc, fast_empty.data());
-            if (segment_empty)
-                for (int i = first; i < end; ++i)
-                    empty += uniform[size_t(i)] ? fast_empty[size_t(i)] : 0;
-            if (!AllSelected)
-                for (int i = first; i < end; ++i)
-                    if (uniform[size_t(i)])
-                        std::copy_n(fast_row.data() + size_t(i) * nc, nc,
-                                    out_row + std::ptrdiff_t(i) * stride);
-            first = next_byte(uniform.data(), end, w, 1);
-        }
-        if constexpr (has_dot_weights<Rule>::value) {
-            rule.smooth_row(y, Span { strip.xbegin, strip.xend }, smooth.data());
-            for (int i = 0; i < w; ++i)
-                smooth[size_t(i)] &= !done[size_t(i)];
-            for (int first = next_byte(smooth.data(), 0, w, 1); first < w;) {
-                const int end = fast_segment_end(smooth.data(), first, w, gap);
-                empty += dot_weighted_means(src, rule.dot_vectors(), strip.xbegin + first,
-                                            strip.xbegin + end, y, smooth.data() + first,
-                                            dot_scratch, out_row + std::ptrdiff_t(first) * stride,
-                                            stride);
-                first = next_byte(smooth.data(), end, w, 1);
-            }
-            for (int i = 0; i < w; ++i)
-                done[size_t(i)] |= smooth[size_t(i)];
-        }
-        // The other chosen pixels (few away from guide edges), in runs of
-        // one center key; consecutive runs of one pixel whose windows lie
-        // inside the block are summed together.
-        const uint8_t* d = done.data();
-        const auto run_end = [&](int i) {
-            int end = i + 1;
-            while (end < w && !d[end]
-                   && rule.key(strip.xbegin + end, y) == rule.key(strip.xbegin + i, y))
-                ++end;
-            return end;
-        };
-        const auto lone = [&](int i, int end) {
-            const int x = strip.xbegin + i, r = src.kernel.radius;
-            return end == i + 1 && x - r >= reg.xbegin && x + r < reg.xend;
-        };
-        for (int i = next_byte(d, 0, w, 0); i < w;) {
-            int end = run_end(i);
-            float* out = out_row + std::ptrdiff_t(i) * stride;
-            if (lone(i, end)) {
-                while (end < w && !d[end] && lone(end, run_end(end)))
-                    ++end;
-                empty += guided_mean_lanes(src, rule, strip.xbegin + i, strip.xbegin + end, y,
-                                           lanes, out, stride);
-            } else {
-                empty += guided_mean_run(src, rule, strip.xbegin + i, strip.xbegin + end, y,
-                                         scratch, out, stride);
-            }
-            i = next_byte(d, end, w, 0);
-        }
-    }
-    result.empty_windows += empty;
 }
 
 }  // namespace mcdenoise

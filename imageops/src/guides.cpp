@@ -118,8 +118,7 @@ bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& 
             if (!ok)
                 return;
             for (int y = part.ybegin; y < part.yend; ++y, in += row_stride) {
-                const size_t out = size_t(y - region.ybegin) * region.width()
-                                   + size_t(part.xbegin - region.xbegin);
+                const size_t out = pixel_offset(region, part.xbegin, y);
                 const bool row_inside = y >= dw.ybegin && y < dw.yend;
                 const int x0
                     = row_inside ? std::clamp(dw.xbegin, part.xbegin, part.xend) : part.xend;
@@ -143,10 +142,9 @@ bool load_rows(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& 
 // out)` writes n values from `out` on.
 template<class T, class Raw, class Convert>
 bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI& region,
-                int nthreads, GuidePlane<T>& plane, Convert&& convert)
+                int nthreads, Plane<T>& plane, Convert&& convert)
 {
-    plane.region = region;
-    plane.values.resize(size_t(region.width()) * region.height());
+    plane     = Plane<T>(region);
     T* values = plane.values.data();
     return load_rows<Raw>(op, dst, guide, region, nthreads,
                           [&convert, values](const Raw* in, int nc, int n, bool inside,
@@ -160,7 +158,7 @@ bool load_plane(const char* op, ImageBuf& dst, const ImageBuf& guide, const ROI&
 // types as the whole numbers they store, not scaled to [0, 1]).
 template<class T, class Convert>
 bool load_raw_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI& region,
-                  int nthreads, GuidePlane<T>& plane, Convert&& convert)
+                  int nthreads, Plane<T>& plane, Convert&& convert)
 {
     using OIIO::TypeDesc;
     const TypeDesc::BASETYPE t = TypeDesc::BASETYPE(ids.spec().format.basetype);
@@ -182,7 +180,7 @@ auto each_pixel(Convert convert)
 // The whole-number ids of `wide` (outside pixels as INT64_MIN) numbered
 // densely in their order, zero at the first non-negative id: equality and
 // sign are kept.
-void renumber(const GuidePlane<int64_t>& wide, IdPlane& plane)
+void renumber(const Plane<int64_t>& wide, IdPlane& plane)
 {
     constexpr int64_t outside = std::numeric_limits<int64_t>::min();
     std::vector<int64_t> sorted(wide.values.begin(), wide.values.end());
@@ -264,7 +262,7 @@ bool load_id_plane(const char* op, ImageBuf& dst, const ImageBuf& ids, const ROI
         });
     if (!ok || !wide_ids)
         return ok;
-    GuidePlane<int64_t> wide;
+    Plane<int64_t> wide;
     const auto wide_id = [](const auto* v, bool inside) {
         return inside ? exact_id<kind>(*v) : std::numeric_limits<int64_t>::min();
     };
@@ -291,12 +289,10 @@ bool load_reflect_ids(const char* op, ImageBuf& dst, const ImageBuf& ids, const 
 bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const ROI& region,
                   int nthreads, NormalPlanes& planes)
 {
-    const size_t n = size_t(region.width()) * region.height();
-    planes.region  = region;
-    planes.x.resize(n);
-    planes.y.resize(n);
-    planes.z.resize(n);
-    float *x = planes.x.data(), *y = planes.y.data(), *z = planes.z.data();
+    planes.components = Planes<float>(region, 3);
+    float* x = planes.components.values[0].data();
+    float* y = planes.components.values[1].data();
+    float* z = planes.components.values[2].data();
     return load_rows<float>(
         op, dst, normals, region, nthreads,
         [x, y, z](const float* in, int nc, int count, bool inside, size_t first) {
@@ -315,7 +311,7 @@ bool load_normals(const char* op, ImageBuf& dst, const ImageBuf& normals, const 
 }
 
 bool load_depths(const char* op, ImageBuf& dst, const ImageBuf& depth, const ROI& region,
-                 int nthreads, GuidePlane<float>& plane)
+                 int nthreads, Plane<float>& plane)
 {
     return load_plane<float, float>(op, dst, depth, region, nthreads, plane,
                                     each_pixel([](const float* d, bool inside) {

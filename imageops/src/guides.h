@@ -4,7 +4,7 @@
 // depths with "infinitely far" made explicit.
 #pragma once
 
-#include "large_buffer.h"
+#include "plane.h"
 
 #include <OpenImageIO/imagebuf.h>
 
@@ -20,21 +20,6 @@ namespace mcdenoise {
 bool check_guide(const char* op, const char* name, OIIO::ImageBuf& dst,
                  const OIIO::ImageBuf& guide, int nchannels, const OIIO::ROI& roi);
 
-/// A plane of values over `region`, one per pixel, row-major.
-template<class T>
-struct GuidePlane {
-    OIIO::ROI region;
-    LargeVector<T> values;
-
-    size_t index(int x, int y) const
-    {
-        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
-    }
-    const T& at(int x, int y) const { return values[index(x, y)]; }
-    /// The values from (x, y) on along row y.
-    const T* from(int x, int y) const { return values.data() + index(x, y); }
-};
-
 /// An id as the filters compare it: 32 bits, so comparisons run on 8 SIMD
 /// lanes and a 1080p plane takes 8 MB.
 using Id = int32_t;
@@ -43,7 +28,7 @@ using Id = int32_t;
 /// the whole numbers it stores (not OIIO's values scaled to [0, 1]). Ids
 /// beyond 32 bits are renumbered densely in their order, which keeps
 /// equality and sign.
-using IdPlane = GuidePlane<Id>;
+using IdPlane = Plane<Id>;
 
 /// The id given to pixels outside a guide's data window: equal to no id.
 constexpr Id no_guide_id = std::numeric_limits<Id>::min();
@@ -70,18 +55,16 @@ struct NormalRow {
     UnitNormal operator[](size_t i) const { return { x[i], y[i], z[i] }; }
 };
 
-/// Unit normals over `region`, one plane per component (row-major, as
-/// `GuidePlane`), so loops along a row read each as contiguous floats.
+/// Unit normals over a region, one plane per component (x, y, z), so loops
+/// along a row read each as contiguous floats.
 struct NormalPlanes {
-    OIIO::ROI region;
-    LargeVector<float> x, y, z;
+    Planes<float> components;
 
     /// The normals from (px, py) on along row py (and the rows below).
     NormalRow from(int px, int py) const
     {
-        const size_t i = size_t(py - region.ybegin) * region.width()
-                         + size_t(px - region.xbegin);
-        return { x.data() + i, y.data() + i, z.data() + i };
+        return { components.from(0, px, py), components.from(1, px, py),
+                 components.from(2, px, py) };
     }
     UnitNormal at(int px, int py) const { return from(px, py)[0]; }
 };
@@ -97,6 +80,6 @@ constexpr float infinitely_far = 1e9f;
 
 /// Depths over `region`; non-finite and >= `infinitely_far` values as +inf.
 bool load_depths(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& depth,
-                 const OIIO::ROI& region, int nthreads, GuidePlane<float>& plane);
+                 const OIIO::ROI& region, int nthreads, Plane<float>& plane);
 
 }  // namespace mcdenoise

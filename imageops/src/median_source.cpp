@@ -37,13 +37,13 @@ std::unique_ptr<ResultPixels> nonfinite_share(const PixelBlock& block, const ROI
 bool load_median_source(const char* op, ImageBuf& dst, const ImageBuf& beauty,
                         const ROI& roi, int size, int nthreads, MedianSource& source)
 {
-    source.radius = size / 2;
-    source.roi    = roi;
-    source.region = grow_and_clip(roi, source.radius, beauty.roi());
-    source.region.chbegin = roi.chbegin;
-    source.region.chend   = roi.chend;
+    source.radius  = size / 2;
+    source.roi     = roi;
+    ROI region     = grow_and_clip(roi, source.radius, beauty.roi());
+    region.chbegin = roi.chbegin;
+    region.chend   = roi.chend;
     PixelBlock block;
-    if (!read_beauty(op, dst, beauty, source.region, block))
+    if (!read_beauty(op, dst, beauty, region, block))
         return false;
     source.planes = channel_planes(block, nthreads);
     source.nonfinite_share.reset();

@@ -6,6 +6,7 @@
 #include <mcdenoise/nlmeans.h>
 
 #include "feature_field.h"
+#include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
 #include "window.h"
@@ -102,19 +103,13 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                 if (yy + dy < dw.ybegin || yy + dy >= dw.yend || xa >= xb)
                     continue;
                 float* d = dist.data() + size_t(yy - (y0 - f)) * pw + (xa - (x0 - f));
-                const size_t up = in.colour.offset(xa, yy), uq = in.colour.offset(xa + dx, yy + dy);
                 const int m = xb - xa;
-                const int vw = in.variance.region.width();
-                const size_t sp = size_t(yy - in.variance.region.ybegin) * vw
-                                  + size_t(xa - in.variance.region.xbegin);
-                const size_t sq = size_t(yy + dy - in.variance.region.ybegin) * vw
-                                  + size_t(xa + dx - in.variance.region.xbegin);
                 DistanceRows rows;
                 for (int c = 0; c < nc; ++c) {
-                    rows.u_p[c] = in.colour.colour[size_t(c)].data() + up;
-                    rows.u_q[c] = in.colour.colour[size_t(c)].data() + uq;
-                    rows.v_p[c] = in.variance.colour[size_t(c)].data() + sp;
-                    rows.v_q[c] = in.variance.colour[size_t(c)].data() + sq;
+                    rows.u_p[c] = in.colour.colour.from(c, xa, yy);
+                    rows.u_q[c] = in.colour.colour.from(c, xa + dx, yy + dy);
+                    rows.v_p[c] = in.variance.colour.from(c, xa, yy);
+                    rows.v_q[c] = in.variance.colour.from(c, xa + dx, yy + dy);
                 }
                 if (nc == 3)
                     distance_row<3>(rows, in.k2, channel_mean, m, d);
@@ -124,14 +119,12 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                     distance_row<1>(rows, in.k2, channel_mean, m, d);
             }
             for (int y = y0; y < y1; ++y) {
-                if (y + dy < dw.ybegin || y + dy >= dw.yend)
+                const Offset o = clip_offset(dx, dy, 1, x0, n, dw);
+                if (y + dy < dw.ybegin || y + dy >= dw.yend || o.count() <= 0)
                     continue;
-                const int i0 = std::max(0, dw.xbegin - dx - x0);
-                const int i1 = std::min(n, dw.xend - dx - x0);
-                if (i0 >= i1)
-                    continue;
+                const int i0 = o.i0, i1 = o.i1;
                 WeightedSums& s = sums[size_t(y - y0)];
-                if (dx == 0 && dy == 0) {
+                if (o.centre()) {
                     std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
                     s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
                     continue;

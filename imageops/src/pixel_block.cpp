@@ -113,7 +113,7 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
     PixelBlock out = owned_block(src.region, 2 * nc);
     parallel_rows(src.region, nthreads, [&](int y) {
         const float* in = src.row(y);
-        float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
+        float* dst      = out.owned_row(y);
         for (int x = 0; x < src.width(); ++x, in += nc, dst += 2 * nc)
             for (int c = 0; c < nc; ++c) {
                 dst[c]      = summable(in[c]);
@@ -128,24 +128,21 @@ PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads)
     PixelBlock out = owned_block(src.region, src.nchannels);
     parallel_rows(src.region, nthreads, [&](int y) {
         const float* in = src.row(y);
-        float* dst = out.owned.data() + size_t(y - src.region.ybegin) * out.row_stride;
+        float* dst      = out.owned_row(y);
         for (std::ptrdiff_t i = 0; i < out.row_stride; ++i)
             dst[i] = std::isfinite(in[i]) ? 0.0f : 1.0f;
     });
     return out;
 }
 
-std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int nthreads)
+Planes<float> channel_planes(const PixelBlock& src, int nthreads)
 {
     const int w = src.width(), nc = src.nchannels;
-    std::vector<std::unique_ptr<float[]>> planes;
-    for (int c = 0; c < nc; ++c)
-        planes.emplace_back(new float[size_t(w) * src.height()]);
+    Planes<float> planes(src.region, nc);
     parallel_rows(src.region, nthreads, [&](int y) {
-        const float* in     = src.row(y);
-        const size_t offset = size_t(y - src.region.ybegin) * w;
+        const float* in = src.row(y);
         for (int c = 0; c < nc; ++c) {
-            float* dst = planes[size_t(c)].get() + offset;
+            float* dst = planes.row(c, y);
             for (int x = 0; x < w; ++x)
                 dst[x] = in[std::ptrdiff_t(x) * nc + c];
         }

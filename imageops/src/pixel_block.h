@@ -3,6 +3,8 @@
 // place when the image already holds local float pixels.
 #pragma once
 
+#include "plane.h"
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <algorithm>
@@ -35,6 +37,8 @@ struct PixelBlock {
     }
     /// Pointer to the first pixel of row `y`.
     const float* row(int y) const { return pixel(region.xbegin, y); }
+    /// Row `y` of a block that owns its pixels, for writing them.
+    float* owned_row(int y) { return owned.data() + (y - region.ybegin) * row_stride; }
     int width() const { return region.width(); }
     int height() const { return region.height(); }
 };
@@ -79,7 +83,7 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads);
 /// A block like `src` holding 1 where its value is non-finite, 0 elsewhere.
 PixelBlock nonfinite_indicator(const PixelBlock& src, int nthreads);
 
-/// Each channel of `src` as a contiguous plane (row stride = width).
-std::vector<std::unique_ptr<float[]>> channel_planes(const PixelBlock& src, int nthreads);
+/// Each channel of `src` as a plane over its region.
+Planes<float> channel_planes(const PixelBlock& src, int nthreads);
 
 }  // namespace mcdenoise

@@ -11,12 +11,9 @@ namespace mcdenoise {
 SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO::ROI& region,
                      int nthreads)
 {
-    SumSource src;
-    src.region      = region;
-    const int nc    = chend - chbegin;
-    const size_t np = size_t(region.width()) * region.height();
-    src.value.assign(size_t(nc), std::vector<float>(np));
-    std::vector<std::vector<float>> finite(static_cast<size_t>(nc), std::vector<float>(np));
+    const int nc = chend - chbegin;
+    SumSource src(region, nc);
+    std::vector<LargeVector<float>> finite = Planes<float>(region, nc).values;
     std::vector<uint8_t> row_has_nonfinite(size_t(region.height()));
     parallel_rows(region, nthreads, [&](int y) {
         const float* in = block.pixel(region.xbegin, y);
@@ -26,8 +23,8 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
             for (int c = 0; c < nc; ++c) {
                 const float v = in[chbegin + c];
                 const bool ok = std::isfinite(v);
-                src.value[size_t(c)][at + i] = summable(v);
-                finite[size_t(c)][at + i]    = ok ? 1.0f : 0.0f;
+                src.values[size_t(c)][at + i] = summable(v);
+                finite[size_t(c)][at + i]     = ok ? 1.0f : 0.0f;
                 any |= !ok;
             }
         row_has_nonfinite[size_t(y - region.ybegin)] = any;
@@ -56,16 +53,16 @@ void WeightedSums::add(const float* w, const SumSource& src, int qx0, int qy, in
         return;
     // Pointers start at i0: the neighbours of i < i0 may lie left of the
     // source region.
-    const size_t at = src.offset(qx0 + i0, qy);
+    const int qx    = qx0 + i0;
     const int n     = i1 - i0;
     const float* wi = w + i0;
     for (int c = 0; c < m_nc; ++c) {
-        const float* v = src.value[size_t(m_c0 + c)].data() + at;
+        const float* v = src.from(m_c0 + c, qx, qy);
         float* num     = m_num.data() + size_t(c) * m_n + i0;
         for (int i = 0; i < n; ++i)
             num[i] += wi[i] * v[i];
         if (m_masked) {
-            const float* m = src.finite[size_t(m_c0 + c)].data() + at;
+            const float* m = src.finite_from(m_c0 + c, qx, qy);
             float* den     = m_den.data() + size_t(c) * m_n + i0;
             for (int i = 0; i < n; ++i)
                 den[i] += wi[i] * m[i];

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "pixel_block.h"
+#include "plane.h"
 
 #include <OpenImageIO/fmath.h>
 #include <OpenImageIO/simd.h>
@@ -21,22 +22,10 @@
 
 namespace mcdenoise {
 
-/// The values the sums read, as channel planes of width `region.width()`:
-/// each value as a sum takes it (`summable`: non-finite ones as 0, huge
-/// ones clamped) and, when any is non-finite, a plane per channel of 1
-/// where finite and 0 where not.
-struct SumSource {
-    OIIO::ROI region;
-    std::vector<std::vector<float>> value;
-    std::vector<std::vector<float>> finite;  ///< empty when every value is finite
-
-    int nchannels() const { return int(value.size()); }
-    bool masked() const { return !finite.empty(); }
-    size_t offset(int x, int y) const
-    {
-        return size_t(y - region.ybegin) * region.width() + size_t(x - region.xbegin);
-    }
-};
+/// The values the sums read, as channel planes: each value as a sum takes
+/// it (`summable`: non-finite ones as 0, huge ones clamped) and, when any is
+/// non-finite, the finite mask.
+using SumSource = Planes<float>;
 
 /// Channels [chbegin, chend) of `block` (whose channels start at 0) over
 /// `region` (inside the block) as a `SumSource`.

@@ -3,7 +3,7 @@
 // input has been read, walks the ROI on all threads, and finishes `dst`.
 #pragma once
 
-#include "guided_mean.h"
+#include "guided_strip.h"
 #include "median_walker.h"
 #include "operation.h"
 
@@ -54,7 +54,7 @@ bool run_window_filter(const char* op, Reduction reduction, OIIO::ImageBuf& dst,
         if constexpr (std::is_same_v<Rule, AllViable>)
             separable_mean_strip(source, strip, result);
         else
-            guided_mean_strip<true>(source, rule, [](int, Span, uint8_t*) {}, strip, result);
+            guided_mean_strip(source, rule, strip, result);
     });
     return finish_result(op, dst, result);
 }
