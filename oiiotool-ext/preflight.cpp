@@ -1,16 +1,21 @@
-// preflight.cpp: argument checks against the OCIO config and the first
-// frame's headers.
+// preflight.cpp: argument checks against the OCIO config, the library's
+// own parameter rules and the first frame's headers.
 #include "preflight.h"
 
 #include "channels.h"
+#include "commands.h"
 #include "error.h"
 #include "frames.h"
 #include "preview.h"
+#include "roles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 namespace mcdtool {
+
+using OIIO::Strutil::fmt::format;
 
 namespace {
 
@@ -49,6 +54,36 @@ void check_selectors(const Options& options, std::optional<int> frame)
                 select_channels(*spec, aov.channels, path_of(aov.file), "--aov " + aov.typed);
 }
 
+/// A 1x1 float image of `nchannels` zeros.
+ImageBuf one_pixel(int nchannels)
+{
+    return ImageBuf(ImageSpec(1, 1, nchannels, OIIO::TypeDesc::FLOAT), OIIO::InitializePixels::Yes);
+}
+
+/// Calls every command once on a 1x1 image with a zero guide of each role it
+/// needs, so that the parameter rules only the library knows (--dof FOCUS
+/// below LEVELS, the widest window it implies) fail before any input is
+/// read, with the library's own message. The rules stay in the library.
+void check_parameters(const Options& options)
+{
+    constexpr int beauty_channels = 3;
+    for (const Step& step : options.steps) {
+        if (!step.command)
+            continue;
+        const Command& command = *step.command;
+        Guides guides;
+        for (Role role : command.roles) {
+            const RoleInfo& info = role_info(role);
+            guides.images[role] = one_pixel(info.like_beauty ? beauty_channels : info.max_channels);
+        }
+        ImageBuf beauty = one_pixel(beauty_channels);
+        ImageBuf dst;
+        Call call{ dst, beauty, guides, step.values, 1 };
+        if (!command.call(call) || dst.has_error())
+            throw UsageError(format("{} : {}", dashed(command.name), one_line(dst.geterror())));
+    }
+}
+
 }  // namespace
 
 std::vector<std::optional<int>> frames_to_run(const Options& options)
@@ -64,6 +99,7 @@ std::vector<std::optional<int>> frames_to_run(const Options& options)
 
 void check_arguments(const Options& options)
 {
+    check_parameters(options);
     try {
         if (!options.preview.empty() || !options.display.empty() || !options.view.empty()
             || !options.ocio_config.empty())

@@ -2,7 +2,8 @@
 // any frame is read: those that need no file (the OCIO display and view of
 // --preview) and those that need only a header (the --beauty and --aov
 // channel selectors, against the first frame's files). Command parameter
-// ranges are checked by the parser itself (args.cpp). A failure is a
+// ranges are checked by the parser itself (args.cpp), the rules between a
+// command's parameters by the library on a 1x1 image. A failure is a
 // UsageError: exit 2, reported once rather than once per frame.
 #pragma once
 

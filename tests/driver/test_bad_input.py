@@ -119,8 +119,8 @@ def test_bad_unwritable_output(testrender_exr, tmp_path):
 def test_bad_later_failure_leaves_no_earlier_output(testrender_exr, tmp_path):
     existing = os.listdir(tmp_path)
     r = run(testrender_exr, "--median", 3, "-o", tmp_path / "first.exr", "--dof", 2, 5,
-            "-o", tmp_path / "second.exr")  # FOCUS beyond LEVELS: found by the library
-    check_failure(r, 1, "--dof : ")
+            "-o", tmp_path / "second.exr")  # FOCUS beyond LEVELS: the library's rule, checked before reading
+    check_failure(r, 2, "--dof : ", "focus_level < levels")
     assert_no_outputs(tmp_path, existing)
 
 

@@ -125,7 +125,7 @@ def test_dof(testrender_exr, tmp_path):
     np.testing.assert_array_equal(beauty_of(out, spec)[near], beauty_of(src, src_spec)[near])
     assert not np.array_equal(beauty_of(out, spec)[~near], beauty_of(src, src_spec)[~near])
     r = run(testrender_exr, "--dof", 10, 10, "-o", tmp_path / "bad.exr")
-    check_failure(r, 1, "mcdtool ERROR: --dof : ")
+    check_failure(r, 2, "mcdtool ERROR: --dof : ")
     assert not (tmp_path / "bad.exr").exists()
 
 

@@ -32,8 +32,9 @@ def write_sequence(directory, frames, names=BEAUTY):
 
 
 def test_bad_values_fail_before_reading(tmp_path):
-    """Sizes, ranges and factors are checked when parsing: the input (which
-    does not exist) is never read; exit 2."""
+    """Sizes, ranges and factors are checked when parsing, the rules between
+    a command's values (FOCUS below LEVELS) by the library before reading:
+    the input (which does not exist) is never read; exit 2."""
     for args, needle in (
         (["--median", 4], "SIZE must be odd"),
         (["--gaussian", 257], "SIZE out of range (odd window side, 1..255), got 257"),
@@ -41,6 +42,8 @@ def test_bad_values_fail_before_reading(tmp_path):
         (["--nlmeans", 200], "SEARCH_RADIUS"),
         (["--clamp-fireflies", 0.5], "FACTOR"),
         (["--dof", 0, 0], "LEVELS"),
+        (["--dof", 10, 12], "0 <= focus_level < levels"),
+        (["--dof-range", 200, 0, 1, 9], "window side of 399"),
     ):
         r = run(tmp_path / "missing.exr", *args, "-o", tmp_path / "out.exr")
         assert r.code == 2 and len(error_lines(r)) == 1 and needle in r.err, r

@@ -138,7 +138,7 @@ def test_robust_inputs_never_modified(testrender_exr, tmp_path):
     bad = run(testrender_exr, "--aov", f"id={ids_file}", "--median", 3, "-o", testrender_exr)
     check_failure(bad, 1, "is an input of this run")
     bad = run(testrender_exr, "--median", 3, "-o", tmp_path / "x.exr", "--dof", 2, 5, "-o", ids_file)
-    check_failure(bad, 1, "--dof : ")
+    check_failure(bad, 2, "--dof : ")
     assert [digest(p) for p in inputs] == before
 
 
