@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Edge-avoiding a-trous wavelet filter (Dammertz et al. 2010,
 /// "Edge-Avoiding A-Trous Wavelet Transform for fast Global Illumination
@@ -50,4 +50,4 @@ bool atrous(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
 /// The largest `iterations` `atrous` accepts.
 constexpr int max_atrous_iterations = 10;
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

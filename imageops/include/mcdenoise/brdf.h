@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// BRDF mean. If the center is specular (`reflect_id` >= 0: the id of the
 /// object its mirror-reflection ray hit), a neighbour is viable when it has
@@ -41,4 +41,4 @@ ImageBuf brdf_median(const ImageBuf& beauty, const ImageBuf& object_id,
 bool brdf_median(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
                  const ImageBuf& reflect_id, int size = default_window_size, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

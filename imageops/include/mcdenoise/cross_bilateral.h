@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Joint / cross bilateral filter (Eisemann & Durand 2004, "Flash
 /// Photography Enhancement via Intrinsic Relighting"; Petschnigg et al.
@@ -41,4 +41,4 @@ bool cross_bilateral(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
                      float sigma_color = default_cross_bilateral_sigma_color,
                      const FeatureSigmas& sigmas = {}, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

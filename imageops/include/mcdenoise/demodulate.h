@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Albedo demodulation (Zimmer et al. 2015; Bako et al. 2017's "diffuse
 /// irradiance"; SVGF, Schied et al. 2017): every colour channel becomes
@@ -39,4 +39,4 @@ ImageBuf remodulate(const ImageBuf& filtered, const ImageBuf& albedo,
 bool remodulate(ImageBuf& dst, const ImageBuf& filtered, const ImageBuf& albedo,
                 float epsilon = default_demodulate_epsilon, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -5,7 +5,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Denoise a Monte Carlo render with every guide it is given: the
 /// project's best non-learned result in one call.
@@ -57,4 +57,4 @@ constexpr float denoise_measured_strength = 1.0f;
 /// `nlmeans` strength when the variance is estimated from the neighbourhood.
 constexpr float denoise_estimated_strength = 0.8f;
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// The window side the `dof` filter uses at each pixel of `roi`, as a one
 /// channel float image (the report's "focus map"). The depths' range is
@@ -39,4 +39,4 @@ bool dof(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
          const ImageBuf& depth, int levels, int focus_level, float depth_near = dof_image_depth_range,
          float depth_far = dof_image_depth_range, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -7,7 +7,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// The auxiliary buffers a feature-guided filter may use. Any may be absent
 /// (nullptr); each present one must cover the ROI (data windows) with the
@@ -66,4 +66,4 @@ struct FeatureSigmas {
 /// the luminance over the same window.
 constexpr int feature_colour_channels = 3;
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Firefly clamp, the outlier pass of the feature-guided denoisers (as in
 /// Cycles' NLM denoiser after Rousselle, Manzi & Zwicker 2013): a pixel far
@@ -38,4 +38,4 @@ bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
 /// The largest `radius` `clamp_fireflies` accepts.
 constexpr int max_firefly_radius = 7;
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 using OIIO::ImageBuf;
 using OIIO::ROI;
@@ -91,4 +91,4 @@ double psnr(const ImageBuf& result, const ImageBuf& reference, ROI roi = {},
 double ssim(const ImageBuf& result, const ImageBuf& reference, ROI roi = {},
             int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

@@ -6,7 +6,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Non-local means with variance-normalised patch distances (Rousselle,
 /// Knaus & Zwicker 2012, "Adaptive Rendering with Non-Local Means
@@ -49,4 +49,4 @@ constexpr int max_nlmeans_search_radius = 127;
 /// The largest `patch_radius` `nlmeans` accepts.
 constexpr int max_nlmeans_patch_radius = 7;
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

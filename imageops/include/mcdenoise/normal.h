@@ -5,7 +5,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Normal mean: over the neighbours with the center's object id, the mean
 /// weighted by max(0, dot(n_p, n_q)) of the normalised normals (`normal`,
@@ -28,4 +28,4 @@ ImageBuf normal_gaussian(const ImageBuf& beauty, const ImageBuf& object_id,
 bool normal_gaussian(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
                      const ImageBuf& normal, int size = default_window_size, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

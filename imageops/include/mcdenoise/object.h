@@ -5,7 +5,7 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/simple.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 /// Object mean: the mean of the finite values of the neighbours that share
 /// the center's object id (one channel, compared as integers after
@@ -39,4 +39,4 @@ ImageBuf object_gaussian(const ImageBuf& beauty, const ImageBuf& object_id, int 
 bool object_gaussian(ImageBuf& dst, const ImageBuf& beauty, const ImageBuf& object_id,
                      int size = default_window_size, ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END

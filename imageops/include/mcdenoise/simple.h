@@ -7,7 +7,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
-namespace mcdenoise MCDENOISE_API {
+MCDENOISE_API_BEGIN
 
 using OIIO::ImageBuf;
 using OIIO::ROI;
@@ -46,4 +46,4 @@ ImageBuf gaussian(const ImageBuf& beauty, int size = default_window_size, ROI ro
 bool gaussian(ImageBuf& dst, const ImageBuf& beauty, int size = default_window_size,
               ROI roi = {}, int nthreads = 0);
 
-}  // namespace mcdenoise
+MCDENOISE_API_END
