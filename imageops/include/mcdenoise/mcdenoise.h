@@ -42,4 +42,5 @@
 #include <mcdenoise/normal.h>
 #include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>
+#include <mcdenoise/temporal.h>
 #include <mcdenoise/metrics.h>
