@@ -45,6 +45,14 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
                     const VarianceField& variance, const OIIO::ROI& dw, int patch_radius,
                     float strength, int nthreads, ResultPixels& result);
 
+/// The weight `nlmeans_frames` gives frame `q`'s pixel at offset 0 from
+/// each pixel of `w.region` (inside `dw`): 1 for the filtered frame
+/// itself, else its patch against `colour`, `variance` and its features
+/// against `q.centre_features`, times `q.usable`; into `w`.
+void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceField& variance,
+                   const OIIO::ROI& dw, int patch_radius, float strength, int nthreads,
+                   Plane<float>& w);
+
 bool nlmeans_frames(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& like,
                     std::initializer_list<const OIIO::ImageBuf*> inputs,
                     const std::vector<NlmFrame>& frames, const ColourField& colour,

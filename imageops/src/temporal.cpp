@@ -115,11 +115,11 @@ bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& cen
                                 temporal_feature_sigmas, dw, dw, nthreads, out.own))
         return false;
     const ROI search = centre.values.region;
-    out.colour   = warp_colour(out.own.colour, map, centre.colour.region(), false);
-    out.variance = warp_colour(out.own.variance, map, centre.variance.region(), true);
-    out.features = warp_features(out.own.features, map, search);
-    out.values   = warp_planes(out.own.values, map, search, false);
-    out.usable   = source_mask(map, search);
+    out.colour   = warp_colour(out.own.colour, map, centre.colour.region(), false, nthreads);
+    out.variance = warp_colour(out.own.variance, map, centre.variance.region(), true, nthreads);
+    out.features = warp_features(out.own.features, map, search, nthreads);
+    out.values   = warp_planes(out.own.values, map, search, false, nthreads);
+    out.usable   = source_mask(map, search, nthreads);
     out.own      = FeatureInputs();
     return true;
 }
