@@ -1,7 +1,8 @@
 // test_temporal.cpp: the cross-frame denoise on small hand-checkable
 // sequences: no neighbours is `denoise`, a still noiseless shot stays
 // as it is, a shifted shot averages the pixels its motion points at (chained
-// over two frames), another surface in a neighbour gets no weight, and the
+// over two frames, a missing frame's vector repeated) or that the search
+// finds without motion, another surface in a neighbour gets no weight, and the
 // result is the same for any thread count, ROI split and neighbour order.
 #include <mcdenoise/mcdenoise.h>
 
@@ -138,6 +139,39 @@ TEST(Temporal, MotionPicksTheMovedPixels)
                 EXPECT_NEAR(at(out, x, y, c), sum / n + 0.01f * float(c), 1e-5f)
                     << x << "," << y << "," << c;
             }
+}
+
+TEST(Temporal, AMissingFrameRepeatsTheLastVector)
+{
+    // Two columns a frame; frame -1 is left out, so the centre's vector
+    // (X = -2) stands in for it: frame -2 is read 4 columns left.
+    const ShiftedFrame centre = shifted_frame(0, -2.0f, 0.0f, colour_a, unit_depth);
+    const ShiftedFrame prev2  = shifted_frame(-4, 0.0f, 0.0f, colour_b, unit_depth);
+    const ImageBuf out = mcd::denoise(centre.input(), { prev2.input() }, { -2 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float expected = x >= 4 ? (colour_a(x, y) + colour_b(x, y)) / 2 : colour_a(x, y);
+            EXPECT_NEAR(at(out, x, y, 0), expected, 1e-5f) << x << "," << y;
+        }
+}
+
+TEST(Temporal, WithoutMotionTheSearchFindsTheMovedPixels)
+{
+    // No motion guide: frame +1 shows the content 3 columns right, inside
+    // the wider search window of a frame taken as it is.
+    ShiftedFrame centre = shifted_frame(0, 0.0f, 0.0f, colour_a, unit_depth);
+    ShiftedFrame next   = shifted_frame(3, 0.0f, 0.0f, colour_b, unit_depth);
+    centre.motion.reset();
+    next.motion.reset();
+    const ImageBuf out = mcd::denoise(centre.input(), { next.input() }, { 1 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float expected =
+                x + 3 < width ? (colour_a(x, y) + colour_b(x, y)) / 2 : colour_a(x, y);
+            EXPECT_NEAR(at(out, x, y, 0), expected, 1e-5f) << x << "," << y;
+        }
 }
 
 TEST(Temporal, WrongMotionFindsNothing)

@@ -201,13 +201,13 @@ std::vector<const GuideChannels*> motion_steps(
 {
     std::vector<const GuideChannels*> steps;
     const int sign = offset > 0 ? 1 : -1;
+    // The frame k steps away: the centre (motions[0]), or the neighbour at
+    // offset sign * k (motions[1 + its index]) when there is one.
     for (int k = 0; k < sign * offset; ++k) {
         const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
-        if (k == 0)
-            steps.push_back(motions.front().get());
-        else
-            steps.push_back(at == offsets.end() ? nullptr
-                                                : motions[1 + size_t(at - offsets.begin())].get());
+        const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size()
+                                                          : 1 + size_t(at - offsets.begin());
+        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
     }
     return steps;
 }
