@@ -229,6 +229,35 @@ TEST(Temporal, SameForAnyThreadsSplitAndOrder)
     EXPECT_EQ(testimg::pixels(rest, bottom), testimg::pixels(one, bottom));
 }
 
+TEST(Temporal, DataWindowOriginAndInPlace)
+{
+    // A data window away from the origin: the same result as at the
+    // origin, moved; and `dst` may be the centre's beauty.
+    const auto frames_at = [](int x0, int y0, std::vector<ImageBuf>& b, std::vector<ImageBuf>& m) {
+        for (int f = 0; f < 3; ++f) {
+            b.push_back(testimg::random_image(width, height, 3, 50 + f, 0.0f, 1.0f,
+                                              TypeDesc::FLOAT, x0, y0));
+            m.push_back(testimg::random_image(width, height, 4, 60 + f, -1.5f, 1.5f,
+                                              TypeDesc::FLOAT, x0, y0));
+        }
+    };
+    std::vector<ImageBuf> b0, m0, b1, m1;
+    frames_at(0, 0, b0, m0);
+    frames_at(7, -5, b1, m1);
+    const auto input = [](std::vector<ImageBuf>& b, std::vector<ImageBuf>& m, int f) {
+        mcd::FrameInput in { &b[size_t(f)], {} };
+        in.guides.motion = &m[size_t(f)];
+        return in;
+    };
+    const ImageBuf at_origin = mcd::denoise(input(b0, m0, 1), { input(b0, m0, 0), input(b0, m0, 2) },
+                                            { -1, 1 });
+    ImageBuf& in_place = b1[1];
+    ASSERT_TRUE(mcd::denoise(in_place, input(b1, m1, 1), { input(b1, m1, 0), input(b1, m1, 2) },
+                             { -1, 1 }));
+    EXPECT_EQ(in_place.roi(), ROI(7, 7 + width, -5, -5 + height, 0, 1, 0, 3));
+    EXPECT_EQ(testimg::pixels(in_place), testimg::pixels(at_origin));
+}
+
 TEST(Temporal, BadNeighboursAreNamed)
 {
     const ImageBuf beauty = testimg::random_image(width, height, 3, 1);

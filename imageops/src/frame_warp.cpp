@@ -42,21 +42,23 @@ WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offs
     const bool still   = steps.empty() || !steps.front();
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            float px = float(x), py = float(y), vx = 0.0f, vy = 0.0f;
+            // The path from the pixel, as a displacement: the same at any
+            // data window origin.
+            float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
             int qx = x, qy = y;
             for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
                 if (steps[k])
                     step_vector(*steps[k], qx, qy, forward, vx, vy);
                 px += vx;
                 py += vy;
-                qx = nearest(px);
-                qy = nearest(py);
+                qx = x + nearest(px);
+                qy = y + nearest(py);
             }
             const bool ok = inside(source_dw, qx, qy);
             map.xs.at(x, y) = ok ? qx : WarpMap::no_source;
             map.ys.at(x, y) = ok ? qy : WarpMap::no_source;
-            map.dx.at(x, y) = px - float(qx);
-            map.dy.at(x, y) = py - float(qy);
+            map.dx.at(x, y) = px - float(qx - x);
+            map.dy.at(x, y) = py - float(qy - y);
         }
     });
     return map;
