@@ -108,6 +108,25 @@ std::string pass_names_text(const RoleInfo& info)
     return OIIO::Strutil::join(names, ", ");
 }
 
+/// The motion role's convention, as established on Blender 3.4 renders
+/// (tests/blender/test_vector_pass.py), and the other renderers' passes.
+constexpr const char* motion_guide_text =
+    "\n### The motion guide\n\n"
+    "`motion` is Blender Cycles' `Vector` pass, 4 channels in pixels with y pointing up the image: a "
+    "pixel at film position (x, y) was at (x + X, y + Y) in the previous frame and is at (x - Z, y - W) in "
+    "the next (in rows counted from the top: (x + X, row - Y) and (x - Z, row + W)). So a point moving 4 "
+    "pixels right and 2 up per frame has X = -4, Y = -2, Z = -4, W = -2: Cycles computes "
+    "X,Y = previous - current and Z,W = current - next, in its raster space (y up), on the first hit's "
+    "position. Checked on a real Cycles render by `tests/blender/test_vector_pass.py` (an orthographic "
+    "shot of a cube moving by a known number of pixels; scene script `tests/blender/vector_pass_scene.py`). "
+    "Cycles writes `Vector` only with motion blur off. testrender writes the same convention as "
+    "`motion.X,Y,Z,W`. Only `--temporal` uses the guide; without it, each neighbour is matched by the "
+    "patch search alone. Other renderers' motion passes are recognised and not used, with a warning "
+    "saying why: Arnold's `motionvector` AOV is one 2D vector over the shutter interval (not to each "
+    "neighbouring frame), and RenderMan's denoise channels `forward` (`motionFore`) and `backward` "
+    "(`motionBack`) have no documented film scale and orientation; convert them to the convention above "
+    "and give them with `--aov motion=FILE:X,Y,Z,W`.\n";
+
 /// The fixed examples that are about options rather than one command.
 std::vector<std::string> option_examples()
 {
@@ -201,6 +220,7 @@ std::string help_markdown()
     for (const RoleInfo& info : role_table())
         md += format("| `{}` | `{}` | {} | {} | {} |\n", info.name, info.argument, channel_count_text(info),
                      cell(info.what), pass_names_text(info));
+    md += motion_guide_text;
 
     md += "\n## Options\n";
     for (const std::string& group : option_groups) {
