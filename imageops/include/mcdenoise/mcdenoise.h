@@ -43,3 +43,4 @@
 #include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>
 #include <mcdenoise/metrics.h>
+#include <mcdenoise/sequence_metrics.h>
