@@ -4,6 +4,7 @@
 #include <mcdenoise/fireflies.h>
 #include <mcdenoise/nlmeans.h>
 
+#include "denoise_frame.h"
 #include "feature_field.h"
 #include "operation.h"
 #include "window.h"
@@ -22,8 +23,6 @@ using OIIO::ROI;
 namespace {
 
 constexpr const char* op_name     = "denoise";
-constexpr int search_radius       = 5;
-constexpr int patch_radius        = 1;
 constexpr float firefly_factor    = 2.0f;
 constexpr int firefly_radius      = 2;
 
@@ -114,37 +113,61 @@ std::string guide_names(const Guides& guides)
 
 }  // namespace
 
-bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
+bool check_denoise_guides(const char* op, ImageBuf& dst, const ImageBuf& beauty,
+                          const Guides& guides, const ROI& roi)
 {
-    Guides used    = guides;  // the object id is not read (see denoise.h)
-    used.object_id = nullptr;
-    if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, used, roi)
-        || !check_halves(dst, beauty, guides, roi))
-        return false;
+    Guides read    = guides;
+    read.object_id = nullptr;
+    return check_feature_guides(op, dst, read, roi) && check_halves(dst, beauty, guides, roi);
+}
+
+ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
+{
     // Everything the nlmeans windows and patches read, and the two 3x3
     // windows of an estimated variance, so the result does not depend on
     // the ROI.
-    ROI region    = grow_and_clip(roi, search_radius + patch_radius + 2, beauty.roi());
+    ROI region    = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius + 2,
+                                  beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
-    ImageBuf clamped, variance;
-    if (!clamp_fireflies(clamped, beauty, used, firefly_factor, firefly_radius, region,
-                         nthreads)) {
-        dst.errorfmt("{}: {}", op_name, clamped.geterror());
+    return region;
+}
+
+bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+                           const ROI& region, int nthreads, DenoiseFrame& frame)
+{
+    frame.guides           = guides;  // the object id is not read (see denoise.h)
+    frame.guides.object_id = nullptr;
+    if (!clamp_fireflies(frame.clamped, beauty, frame.guides, firefly_factor, firefly_radius,
+                         region, nthreads)) {
+        dst.errorfmt("{}: {}", op_name, frame.clamped.geterror());
         return false;
     }
     ROI colour   = region;
     colour.chend = colour_channels(beauty.nchannels());
     const bool measured = guides.variance || guides.half_a;
     if (!guides.variance) {
-        if (guides.half_a ? !variance_from_halves(dst, guides, colour, nthreads, variance)
-                          : !estimated_variance(dst, clamped, region, nthreads, variance))
+        if (guides.half_a
+                ? !variance_from_halves(dst, guides, colour, nthreads, frame.variance)
+                : !estimated_variance(dst, frame.clamped, region, nthreads, frame.variance))
             return false;
-        used.variance = &variance;
+        frame.guides.variance = &frame.variance;
     }
-    const float strength = measured ? denoise_measured_strength : denoise_estimated_strength;
-    if (!nlmeans(dst, clamped, used, search_radius, patch_radius, strength,
-                 denoise_feature_sigmas, roi, nthreads))
+    frame.strength = measured ? denoise_measured_strength : denoise_estimated_strength;
+    return true;
+}
+
+bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
+{
+    if (!resolve_roi(op_name, dst, beauty, roi)
+        || !check_denoise_guides(op_name, dst, beauty, guides, roi))
+        return false;
+    DenoiseFrame frame;
+    if (!prepare_denoise_frame(dst, beauty, guides, denoise_region(beauty, roi), nthreads,
+                               frame)
+        || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
+                    denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
+                    nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
     return true;

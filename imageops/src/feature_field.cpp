@@ -121,16 +121,23 @@ bool load_guide_channels(const char* op, ImageBuf& dst, const ImageBuf& guide,
 void FeatureField::weights_row(int y, int x0, int n, int dx, int dy, const float* e,
                                float scale, float* w) const
 {
+    weights_row(y, x0, n, dx, dy, e, scale, w, *this);
+}
+
+void FeatureField::weights_row(int y, int x0, int n, int dx, int dy, const float* e,
+                               float scale, float* w, const FeatureField& other) const
+{
     using OIIO::simd::vfloat8;
     const size_t pc = dims.offset(x0, y), pq = dims.offset(x0 + dx, y + dy);
     const vfloat8 s(scale);
     const bool by_id = !ids.values.empty();
     const Id* ka     = by_id ? ids.values.data() + pc : nullptr;
-    const Id* kb     = by_id ? ids.values.data() + pq : nullptr;
+    const Id* kb     = by_id ? other.ids.values.data() + pq : nullptr;
     for_each_lane_block(n, w, [&](int, auto&& load) {
         vfloat8 x = load(e);
-        for (const LargeVector<float>& dim : dims.values) {
-            const vfloat8 t = load(dim.data() + pc) - load(dim.data() + pq);
+        for (size_t k = 0; k < dims.values.size(); ++k) {
+            const vfloat8 t = load(dims.values[k].data() + pc)
+                              - load(other.dims.values[k].data() + pq);
             x = x + t * t;
         }
         const vfloat8 v = weight_lanes(x, s);

@@ -48,6 +48,10 @@ struct FeatureField {
     /// and 0 across object ids. Both pixels must lie in the dims' region.
     void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
                      float* w) const;
+    /// `weights_row` with the neighbour's features read from `other` (the
+    /// same dimensions and region: another frame in this one's pixel grid).
+    void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
+                     float* w, const FeatureField& other) const;
 };
 
 /// Read the features of `guides` (checked with `check_feature_guides`) over

@@ -6,6 +6,7 @@
 #include <mcdenoise/nlmeans.h>
 
 #include "feature_field.h"
+#include "nlmeans_frames.h"
 #include "offset_walk.h"
 #include "operation.h"
 #include "weighted_sums.h"
@@ -27,14 +28,11 @@ constexpr int chunk_rows = 16;
 // Guard of the distance's denominator (Rousselle et al. 2012, eq. 9).
 constexpr float distance_guard = 1e-10f;
 
-// What every chunk reads.
+// What every chunk reads: the frames' windows, the filtered frame's first.
 struct NlmInputs {
-    const ColourField& colour;
-    const VarianceField& variance;
-    const FeatureField& features;
-    const SumSource& values;
+    const std::vector<NlmFrame>& frames;
     ROI roi, dw;
-    int r, f;
+    int f;
     float k2;  // strength^2
 };
 
@@ -76,21 +74,20 @@ inline int patch_count(int p, int d, int f, int lo, int hi)
     return b - a + 1;
 }
 
-// Rows [y0, y1), columns [x0, x0 + n) of the ROI.
-void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPixels& result)
+// Add the weights of frame `q`'s window to rows [y0, y1), columns
+// [x0, x0 + n) of the ROI.
+void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0, int n,
+                 std::vector<WeightedSums>& sums)
 {
-    const ROI& roi = in.roi;
-    const ROI& dw  = in.dw;
-    const int r = in.r, f = in.f;
+    const NlmFrame& p = in.frames.front();
+    const ROI& dw     = in.dw;
+    const int r = q.search_radius, f = in.f;
     const int pw = n + 2 * f;          // distance rows: x from x0 - f
     const int ph = (y1 - y0) + 2 * f;  // rows from y0 - f
-    const int nc = in.colour.nchannels();
+    const int nc = p.colour->nchannels();
     const float channel_mean = 1.0f / float(nc);
     std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
         e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n));
-    std::vector<WeightedSums> sums;
-    for (int y = y0; y < y1; ++y)
-        sums.emplace_back(roi.chbegin, roi.chend, n, in.values.masked());
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
             for (int i = 0; i < n; ++i)
@@ -106,10 +103,10 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                 const int m = xb - xa;
                 DistanceRows rows;
                 for (int c = 0; c < nc; ++c) {
-                    rows.u_p[c] = in.colour.colour.from(c, xa, yy);
-                    rows.u_q[c] = in.colour.colour.from(c, xa + dx, yy + dy);
-                    rows.v_p[c] = in.variance.colour.from(c, xa, yy);
-                    rows.v_q[c] = in.variance.colour.from(c, xa + dx, yy + dy);
+                    rows.u_p[c] = p.colour->colour.from(c, xa, yy);
+                    rows.u_q[c] = q.colour->colour.from(c, xa + dx, yy + dy);
+                    rows.v_p[c] = p.variance->colour.from(c, xa, yy);
+                    rows.v_q[c] = q.variance->colour.from(c, xa + dx, yy + dy);
                 }
                 if (nc == 3)
                     distance_row<3>(rows, in.k2, channel_mean, m, d);
@@ -124,9 +121,9 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                     continue;
                 const int i0 = o.i0, i1 = o.i1;
                 WeightedSums& s = sums[size_t(y - y0)];
-                if (o.centre()) {
+                if (q.own && o.centre()) {
                     std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
-                    s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
+                    s.add(w.data(), *q.values, x0 + dx, y + dy, i0, i1);
                     continue;
                 }
                 // Patch sums: down the rows, then along the columns, each
@@ -145,11 +142,26 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
                 const float cy = float(patch_count(y, dy, f, dw.ybegin, dw.yend));
                 for (int i = i0; i < i1; ++i)
                     e[i] = std::max(0.0f, e[i] / (cy * cx[i]));
-                in.features.weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0, 1.0f,
-                                        w.data() + i0);
-                s.add(w.data(), in.values, x0 + dx, y + dy, i0, i1);
+                q.centre_features->weights_row(y, x0 + i0, i1 - i0, dx, dy, e.data() + i0,
+                                               1.0f, w.data() + i0, *q.features);
+                if (q.usable) {
+                    const float* u = q.usable->from(x0 + dx, y + dy);
+                    for (int i = i0; i < i1; ++i)
+                        w[i] *= u[i];
+                }
+                s.add(w.data(), *q.values, x0 + dx, y + dy, i0, i1);
             }
         }
+}
+
+// Rows [y0, y1), columns [x0, x0 + n) of the ROI.
+void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPixels& result)
+{
+    std::vector<WeightedSums> sums;
+    for (int y = y0; y < y1; ++y)
+        sums.emplace_back(in.roi.chbegin, in.roi.chend, n, in.frames.front().values->masked());
+    for (const NlmFrame& q : in.frames)
+        frame_chunk(in, q, y0, y1, x0, n, sums);
     int64_t empty = 0;
     for (int y = y0; y < y1; ++y)
         empty += sums[size_t(y - y0)].write(result.pixel(x0, y), result.pixel_stride());
@@ -185,14 +197,24 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
     FeatureInputs fin;
     if (!load_feature_inputs(op, dst, beauty, guides, sigmas, search, patches, nthreads, fin))
         return false;
+    const std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features,
+                                           &fin.features, &fin.values, nullptr, search_radius,
+                                           true } };
+    return nlmeans_frames(op, dst, beauty,
+                          { &beauty, guides.object_id, guides.normal, guides.depth,
+                            guides.albedo, guides.variance },
+                          frames, patch_radius, strength, roi, nthreads);
+}
+
+bool nlmeans_frames(const char* op, ImageBuf& dst, const ImageBuf& like,
+                    std::initializer_list<const ImageBuf*> inputs,
+                    const std::vector<NlmFrame>& frames, int patch_radius, float strength,
+                    const ROI& roi, int nthreads)
+{
     ResultPixels result;
-    if (!begin_result(op, dst, beauty,
-                      { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
-                        guides.variance },
-                      roi, result))
+    if (!begin_result(op, dst, like, inputs, roi, result))
         return false;
-    const NlmInputs in { fin.colour, fin.variance, fin.features, fin.values, roi, dw,
-                         search_radius, patch_radius, strength * strength };
+    const NlmInputs in { frames, roi, like.roi(), patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)

@@ -25,6 +25,11 @@ struct Guides {
     const ImageBuf* variance  = nullptr;  ///< 3 or 1 channels (variance of the pixel mean)
     const ImageBuf* half_a    = nullptr;  ///< like beauty (used by denoise only)
     const ImageBuf* half_b    = nullptr;  ///< like beauty (used by denoise only)
+    /// 4 channels (used by the cross-frame denoise of temporal.h only):
+    /// screen-space motion in pixels, Cycles' Vector convention: pixel
+    /// (x, row) of this frame was at (x + X, row - Y) in the previous frame
+    /// and is at (x - Z, row + W) in the next (rows counted downwards).
+    const ImageBuf* motion = nullptr;
 };
 
 /// How fast a neighbour's weight falls with each feature difference.

@@ -42,5 +42,6 @@
 #include <mcdenoise/normal.h>
 #include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>
+#include <mcdenoise/temporal.h>
 #include <mcdenoise/metrics.h>
 #include <mcdenoise/sequence_metrics.h>

@@ -1,0 +1,47 @@
+// denoise_frame.h: the steps `denoise` takes on a frame before its
+// NL-means average (the firefly clamp and the variance), shared with the
+// cross-frame denoise of temporal.h.
+#pragma once
+
+#include <mcdenoise/features.h>
+
+#include <OpenImageIO/imagebuf.h>
+
+namespace mcdenoise {
+
+/// A frame ready for `denoise`'s NL-means average. Not movable: `guides`
+/// may point at `variance`.
+struct DenoiseFrame {
+    DenoiseFrame()                    = default;
+    DenoiseFrame(const DenoiseFrame&) = delete;
+    DenoiseFrame& operator=(const DenoiseFrame&) = delete;
+
+    OIIO::ImageBuf clamped;   ///< the beauty, fireflies clamped
+    OIIO::ImageBuf variance;  ///< when not given as a guide
+    Guides guides;            ///< the guides the average reads (variance set)
+    float strength = 0.0f;    ///< the NL-means strength the variance calls for
+};
+
+/// `denoise`'s steps before the average on `beauty` over `region` (all its
+/// channels): clamp the fireflies, then take the variance from the guide,
+/// the halves or an estimate. Object ids are dropped from the guides.
+/// The guides must have been checked; on failure sets `dst`'s error.
+bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                           const Guides& guides, const OIIO::ROI& region, int nthreads,
+                           DenoiseFrame& frame);
+
+/// Check the guides `denoise` reads (the feature guides and the halves)
+/// against `roi`; on failure sets `dst`'s error prefixed with `op`.
+bool check_denoise_guides(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                          const Guides& guides, const OIIO::ROI& roi);
+
+/// The region `denoise`'s steps read to filter `roi` of `beauty`: the
+/// search window, the patches and the two 3x3 windows of an estimated
+/// variance, clipped to the data window, with all channels.
+OIIO::ROI denoise_region(const OIIO::ImageBuf& beauty, const OIIO::ROI& roi);
+
+/// `denoise`'s NL-means search and patch radii.
+constexpr int denoise_search_radius = 5;
+constexpr int denoise_patch_radius  = 1;
+
+}  // namespace mcdenoise

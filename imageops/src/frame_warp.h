@@ -1,0 +1,56 @@
+// frame_warp.h: carrying a neighbour frame into the centre frame's pixel
+// grid through the motion guides (nearest pixel, vectors chained frame by
+// frame), for the cross-frame denoise.
+#pragma once
+
+#include "feature_field.h"
+#include "plane.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace mcdenoise {
+
+/// Where each pixel of a region of the centre frame lies in a neighbour
+/// frame: the column and row of its source pixel, or `no_source`.
+struct WarpMap {
+    Plane<int32_t> xs, ys;
+
+    static constexpr int32_t no_source = std::numeric_limits<int32_t>::min();
+    bool has_source(size_t i) const { return xs.values[i] != no_source; }
+};
+
+/// The map of `region` of the centre frame to the frame `offset` (non-zero)
+/// frames away, whose data window is `source_dw`. `steps[k]` is the motion
+/// (4 channels, Cycles' Vector convention, over `source_dw`) of the frame
+/// k frames from the centre towards the neighbour, k < |offset|, or
+/// nullptr where that frame's motion is unknown (the previous step's vector
+/// stands in). Positions are chained in floats and each vector is read at
+/// the nearest pixel; a pixel whose path leaves `source_dw` has no source.
+/// With no motion for the centre (`steps[0]` null) every pixel is its own
+/// source.
+WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
+                        const OIIO::ROI& region, const OIIO::ROI& source_dw, int nthreads);
+
+/// The values of `src` at each pixel's source, over `region` (inside the
+/// map's region); `fill` where there is none or the source lies outside
+/// `src`'s region.
+template<class T>
+Plane<T> warp_plane(const Plane<T>& src, const WarpMap& map, const OIIO::ROI& region, T fill);
+
+/// `warp_plane` for every channel of `src` (and its finite mask, 0 where
+/// there is no source).
+Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region);
+
+/// Colour planes and luminance carried by `map` over `region`.
+ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region);
+
+/// Feature dimensions and ids carried by `map` over `region`: no source
+/// gives an id equal to no other.
+FeatureField warp_features(const FeatureField& src, const WarpMap& map, const OIIO::ROI& region);
+
+/// 1 where a pixel of `region` has a source, 0 where not.
+Plane<float> source_mask(const WarpMap& map, const OIIO::ROI& region);
+
+}  // namespace mcdenoise

@@ -1,0 +1,45 @@
+// nlmeans_frames.h: NL-means over several frames in one pixel grid: the
+// filtered frame's own search window and, for the cross-frame denoise,
+// windows in neighbour frames already carried into that grid.
+#pragma once
+
+#include "feature_field.h"
+#include "plane.h"
+
+#include <vector>
+
+namespace mcdenoise {
+
+/// One frame the search windows reach into, over the filtered frame's
+/// regions (colour over the patches grown by one, variance over the
+/// patches, features and values over the search windows).
+struct NlmFrame {
+    const ColourField* colour;
+    const VarianceField* variance;
+    /// This frame's features and the filtered frame's, compared as
+    /// `FeatureField::weights_row` does (the same dimensions, same scales).
+    const FeatureField* features;
+    const FeatureField* centre_features;
+    /// Every channel; all frames' `masked()` must agree.
+    const SumSource* values;
+    /// A factor on every weight of a pixel of this frame, over the search
+    /// region; nullptr for 1.
+    const Plane<float>* usable;
+    int search_radius;
+    /// True for the filtered frame itself: its pixel weighs 1 for itself.
+    bool own;
+};
+
+/// The NL-means average of `roi` (channels of `frames`' values) over the
+/// windows of every frame in order, with patch radius `patch_radius` and
+/// `strength`, the distances normalised by the variance of `frames[0]`
+/// (the filtered frame, `own`) and of each frame's own pixels. `dw` is the
+/// filtered frame's data window. Writes `dst` as `nlmeans` does, with
+/// `like` as the image the result is shaped after and `inputs` for in-place
+/// detection.
+bool nlmeans_frames(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& like,
+                    std::initializer_list<const OIIO::ImageBuf*> inputs,
+                    const std::vector<NlmFrame>& frames, int patch_radius, float strength,
+                    const OIIO::ROI& roi, int nthreads);
+
+}  // namespace mcdenoise

@@ -1,0 +1,253 @@
+// temporal.cpp: the cross-frame denoise: each frame prepared as `denoise`
+// prepares it, the neighbours carried into the centre's pixel grid, one
+// NL-means average over the centre's window and the neighbours' windows.
+#include <mcdenoise/temporal.h>
+
+#include "denoise_frame.h"
+#include "feature_field.h"
+#include "frame_warp.h"
+#include "guides.h"
+#include "nlmeans_frames.h"
+#include "operation.h"
+#include "window.h"
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <string>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+constexpr const char* op_name = "denoise";
+
+// A neighbour frame prepared over its data window and carried into the
+// centre's regions.
+struct Neighbour {
+    DenoiseFrame frame;
+    FeatureInputs own;  // over its data window, temporal feature scales
+    ColourField colour;
+    VarianceField variance;
+    FeatureField features;
+    SumSource values;
+    Plane<float> usable;
+};
+
+// Which guides a frame has, as flags in the order of `Guides`.
+std::string guide_set(const Guides& g)
+{
+    std::string s;
+    for (const ImageBuf* p :
+         { g.object_id, g.normal, g.depth, g.albedo, g.variance, g.half_a, g.half_b })
+        s += p ? '1' : '0';
+    return s;
+}
+
+bool same_window(const ROI& a, const ROI& b)
+{
+    return a.xbegin == b.xbegin && a.xend == b.xend && a.ybegin == b.ybegin && a.yend == b.yend
+           && a.zbegin == b.zbegin && a.zend == b.zend;
+}
+
+// The checks of one frame's inputs against `roi`, its errors prefixed with
+// `what` (the frame).
+bool check_frame(ImageBuf& dst, const FrameInput& frame, const std::string& what,
+                 const ROI& roi)
+{
+    const std::string op = std::string(op_name) + ": " + what;
+    if (!frame.beauty) {
+        dst.errorfmt("{}: no beauty", op);
+        return false;
+    }
+    Guides read = frame.guides;
+    return check_denoise_guides(op.c_str(), dst, *frame.beauty, read, roi)
+           && (!read.object_id
+               || check_guide(op.c_str(), "object_id", dst, *read.object_id, 1, roi))
+           && (!read.motion || check_guide(op.c_str(), "motion", dst, *read.motion, 4, roi));
+}
+
+bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
+                      const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets)
+{
+    if (neighbours.size() != offsets.size()) {
+        dst.errorfmt("{}: {} neighbour frames but {} offsets", op_name, neighbours.size(),
+                     offsets.size());
+        return false;
+    }
+    for (size_t i = 0; i < neighbours.size(); ++i) {
+        const std::string what = "neighbour frame at offset " + std::to_string(offsets[i]);
+        if (offsets[i] == 0
+            || std::count(offsets.begin(), offsets.end(), offsets[i]) > 1) {
+            dst.errorfmt("{}: {}: offsets must be non-zero and distinct", op_name, what);
+            return false;
+        }
+        const FrameInput& n = neighbours[i];
+        if (!check_frame(dst, n, what, n.beauty ? n.beauty->roi() : ROI()))
+            return false;
+        if (!same_window(n.beauty->roi(), centre.beauty->roi())
+            || n.beauty->nchannels() != centre.beauty->nchannels()) {
+            dst.errorfmt("{}: {}: data window or channel count differs from the centre frame's",
+                         op_name, what);
+            return false;
+        }
+        if (guide_set(n.guides) != guide_set(centre.guides)) {
+            dst.errorfmt("{}: {}: has not the centre frame's set of guides", op_name, what);
+            return false;
+        }
+    }
+    return true;
+}
+
+// The guides the cross-frame comparison reads: the average's, with the
+// object id (a hard rule between frames).
+Guides compared_guides(const DenoiseFrame& frame, const Guides& given)
+{
+    Guides g    = frame.guides;
+    g.object_id = given.object_id;
+    return g;
+}
+
+// Load the motion of every frame that has one, over its data window.
+bool load_motions(ImageBuf& dst, const FrameInput& centre,
+                  const std::vector<FrameInput>& neighbours, int nthreads,
+                  std::vector<std::unique_ptr<GuideChannels>>& motions)
+{
+    motions.clear();
+    for (size_t i = 0; i <= neighbours.size(); ++i) {
+        const FrameInput& f = i == 0 ? centre : neighbours[i - 1];
+        motions.emplace_back();
+        if (!f.guides.motion)
+            continue;
+        motions.back() = std::make_unique<GuideChannels>();
+        if (!load_guide_channels(op_name, dst, *f.guides.motion, f.beauty->roi(), nthreads,
+                                 *motions.back()))
+            return false;
+    }
+    return true;
+}
+
+// The motion steps from the centre to the frame at `offset`: the motion of
+// each frame on the way, null where unknown.
+std::vector<const GuideChannels*> motion_steps(
+    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
+    int offset)
+{
+    std::vector<const GuideChannels*> steps;
+    const int sign = offset > 0 ? 1 : -1;
+    for (int k = 0; k < sign * offset; ++k) {
+        const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
+        const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size() : 1 + size_t(at - offsets.begin());
+        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
+    }
+    return steps;
+}
+
+// Prepare neighbour `n` over its data window and carry it into `centre`'s
+// regions through `map`.
+bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& centre,
+                    const WarpMap& map, int nthreads, Neighbour& out)
+{
+    ROI dw    = n.beauty->roi();
+    dw.chbegin = 0;
+    dw.chend   = n.beauty->nchannels();
+    if (!prepare_denoise_frame(dst, *n.beauty, n.guides, dw, nthreads, out.frame)
+        || !load_feature_inputs(op_name, dst, out.frame.clamped,
+                                compared_guides(out.frame, n.guides), temporal_feature_sigmas,
+                                dw, dw, nthreads, out.own))
+        return false;
+    const ROI search = centre.values.region;
+    out.colour   = warp_colour(out.own.colour, map, centre.colour.region());
+    out.variance = warp_colour(out.own.variance, map, centre.variance.region());
+    out.features = warp_features(out.own.features, map, search);
+    out.values   = warp_planes(out.own.values, map, search);
+    out.usable   = source_mask(map, search);
+    out.own      = FeatureInputs();
+    return true;
+}
+
+// Give every frame's values a finite mask when any has one, so the sums
+// treat them alike.
+void align_masks(std::vector<SumSource*> values)
+{
+    const bool any = std::any_of(values.begin(), values.end(),
+                                 [](const SumSource* v) { return v->masked(); });
+    for (SumSource* v : values)
+        if (any && !v->masked())
+            v->finite = Planes<float>(v->region, v->nchannels(), 1.0f).values;
+}
+
+}  // namespace
+
+bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInput>& neighbours,
+             const std::vector<int>& offsets, ROI roi, int nthreads)
+{
+    if (!centre.beauty) {
+        dst.errorfmt("{}: the centre frame has no beauty", op_name);
+        return false;
+    }
+    if (!check_neighbours(dst, centre, neighbours, offsets))
+        return false;
+    if (neighbours.empty())
+        return denoise(dst, *centre.beauty, centre.guides, roi, nthreads);
+    const ImageBuf& beauty = *centre.beauty;
+    if (!resolve_roi(op_name, dst, beauty, roi) || !check_frame(dst, centre, "centre frame", roi))
+        return false;
+    DenoiseFrame c;
+    FeatureInputs fin;
+    FeatureField compared;
+    if (!prepare_denoise_frame(dst, beauty, centre.guides, denoise_region(beauty, roi), nthreads,
+                               c))
+        return false;
+    const ROI dw      = c.clamped.roi();
+    const ROI search  = grow_and_clip(roi, denoise_search_radius, dw);
+    const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
+    std::vector<std::unique_ptr<GuideChannels>> motions;
+    if (!load_feature_inputs(op_name, dst, c.clamped, c.guides, denoise_feature_sigmas, search,
+                             patches, nthreads, fin)
+        || !load_feature_field(op_name, dst, compared_guides(c, centre.guides),
+                               temporal_feature_sigmas, search, nthreads, compared)
+        || !load_motions(dst, centre, neighbours, nthreads, motions))
+        return false;
+    // Neighbours in the order of their offsets, so the sums do not depend
+    // on the order they are listed in.
+    std::vector<size_t> order(neighbours.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
+    std::vector<std::unique_ptr<Neighbour>> loaded;
+    std::vector<SumSource*> values { &fin.values };
+    for (size_t i : order) {
+        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]), offsets[i],
+                                            fin.colour.region(), neighbours[i].beauty->roi(),
+                                            nthreads);
+        loaded.push_back(std::make_unique<Neighbour>());
+        if (!load_neighbour(dst, neighbours[i], fin, map, nthreads, *loaded.back()))
+            return false;
+        values.push_back(&loaded.back()->values);
+    }
+    align_masks(values);
+    const int radius = centre.guides.motion ? temporal_search_radius : temporal_still_search_radius;
+    std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features, &fin.features,
+                                     &fin.values, nullptr, denoise_search_radius, true } };
+    for (const auto& n : loaded)
+        frames.push_back({ &n->colour, &n->variance, &n->features, &compared, &n->values,
+                           &n->usable, radius, false });
+    if (!nlmeans_frames(op_name, dst, c.clamped, { centre.beauty, &c.clamped }, frames,
+                        denoise_patch_radius, c.strength, roi, nthreads))
+        return false;
+    dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
+    return true;
+}
+
+ImageBuf denoise(const FrameInput& centre, const std::vector<FrameInput>& neighbours,
+                 const std::vector<int>& offsets, ROI roi, int nthreads)
+{
+    return value_form(
+        [&](ImageBuf& dst) { return denoise(dst, centre, neighbours, offsets, roi, nthreads); });
+}
+
+}  // namespace mcdenoise

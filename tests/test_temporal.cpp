@@ -1,0 +1,226 @@
+// test_temporal.cpp: the cross-frame denoise on small hand-checkable
+// sequences: no neighbours is `denoise`, a still noiseless shot stays
+// as it is, a shifted shot averages the pixels its motion points at (chained
+// over two frames), another surface in a neighbour gets no weight, and the
+// result is the same for any thread count, ROI split and neighbour order.
+#include <mcdenoise/mcdenoise.h>
+
+#include "support/guide_images.h"
+#include "support/test_images.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+using OIIO::TypeDesc;
+namespace mcd = mcdenoise;
+
+namespace {
+
+constexpr int width = 24, height = 20;
+
+ImageBuf image(int nchannels, const std::vector<float>& values)
+{
+    return testimg::from_values(width, height, nchannels, TypeDesc::FLOAT, 0, 0, values);
+}
+
+ImageBuf constant(int nchannels, float v)
+{
+    return image(nchannels, std::vector<float>(size_t(width) * height * nchannels, v));
+}
+
+// One frame of a shot whose content sits `shift` columns to the right of
+// frame 0's: the beauty is `colour(u, y)` of the content column u, the
+// albedo a code unique to each content pixel (so no two pixels of one frame
+// look alike and only the same content pixel matches across frames), the
+// depth `depth(u, y)`, a large variance (every patch distance 0).
+struct ShiftedFrame {
+    ImageBuf beauty, albedo, depth, variance, motion;
+    mcd::FrameInput input() const
+    {
+        mcd::FrameInput f { &beauty, {} };
+        f.guides.albedo   = &albedo;
+        f.guides.depth    = &depth;
+        f.guides.variance = &variance;
+        f.guides.motion   = motion.initialized() ? &motion : nullptr;
+        return f;
+    }
+};
+
+template<class Colour, class Depth>
+ShiftedFrame shifted_frame(int shift, float back, float on, Colour&& colour, Depth&& depth)
+{
+    std::vector<float> c, a, z, m;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const int u = x - shift;
+            for (int k = 0; k < 3; ++k)
+                c.push_back(colour(u, y) + 0.01f * float(k));
+            a.insert(a.end(), { 5.0f * float(u), 5.0f * float(y), 0.0f });
+            z.push_back(depth(u, y));
+            // Cycles' Vector: (x + X, y - Y) in the previous frame,
+            // (x - Z, y + W) in the next.
+            m.insert(m.end(), { back, 0.0f, -on, 0.0f });
+        }
+    return { image(3, c), image(3, a), image(1, z), constant(3, 100.0f), image(4, m) };
+}
+
+float colour_a(int u, int y) { return 0.5f + 0.01f * float((u * 7 + y * 13) % 11); }
+float colour_b(int u, int y) { return 0.45f + 0.01f * float((u * 5 + y * 3) % 7); }
+float unit_depth(int, int) { return 1.0f; }
+
+float at(const ImageBuf& img, int x, int y, int c)
+{
+    float v[4] = {};
+    img.getpixel(x, y, v, 4);
+    return v[c];
+}
+
+}  // namespace
+
+TEST(Temporal, NoNeighboursIsDenoise)
+{
+    const ImageBuf beauty = testimg::random_image(width, height, 4, 3);
+    const ImageBuf normal = testimg::wavy_normals(width, height, 4);
+    mcd::FrameInput centre { &beauty, {} };
+    centre.guides.normal = &normal;
+    const ImageBuf single   = mcd::denoise(beauty, centre.guides);
+    const ImageBuf temporal = mcd::denoise(centre, {}, {});
+    ASSERT_FALSE(temporal.has_error()) << temporal.geterror();
+    EXPECT_TRUE(testimg::bit_identical(single, temporal));
+}
+
+TEST(Temporal, StillNoiselessShotStays)
+{
+    // A step edge with a tiny variance: only equal pixels weigh anything.
+    std::vector<float> v;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            v.insert(v.end(), 3, x < width / 2 ? 0.3f : 0.6f);
+    const ImageBuf beauty = image(3, v), variance = constant(1, 1e-6f);
+    mcd::FrameInput frame { &beauty, {} };
+    frame.guides.variance = &variance;
+    const ImageBuf out = mcd::denoise(frame, { frame, frame }, { -1, 1 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    const std::vector<float> got = testimg::pixels(out);
+    ASSERT_EQ(got.size(), v.size());
+    for (size_t i = 0; i < v.size(); ++i)  // sums of equal values, rounded
+        EXPECT_NEAR(got[i], v[i], 1e-5f) << i;
+}
+
+TEST(Temporal, MotionPicksTheMovedPixels)
+{
+    // Frame -1 shows the content 1 column left, frame -2 3 columns left:
+    // the centre's vector X = -1, frame -1's X = -2, chained to -3.
+    const ShiftedFrame centre = shifted_frame(0, -1.0f, 0.0f, colour_a, unit_depth);
+    const ShiftedFrame prev   = shifted_frame(-1, -2.0f, 0.0f, colour_b, unit_depth);
+    const ShiftedFrame prev2  = shifted_frame(-3, 0.0f, 0.0f,
+                                             [](int u, int y) { return colour_a(u + 5, y); },
+                                             unit_depth);
+    const ImageBuf out = mcd::denoise(centre.input(), { prev.input(), prev2.input() }, { -1, -2 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                // The content column x shows in frame -1 at x - 1, in -2 at x - 3.
+                float sum = colour_a(x, y), n = 1.0f;
+                if (x - 1 >= 0) {
+                    sum += colour_b(x, y);
+                    n += 1.0f;
+                }
+                if (x - 3 >= 0) {
+                    sum += colour_a(x + 5, y);
+                    n += 1.0f;
+                }
+                EXPECT_NEAR(at(out, x, y, c), sum / n + 0.01f * float(c), 1e-5f)
+                    << x << "," << y << "," << c;
+            }
+}
+
+TEST(Temporal, WrongMotionFindsNothing)
+{
+    // The motion points the other way: the search window (radius 2) holds
+    // no pixel with the centre's albedo, so the centre stays as it is.
+    const ShiftedFrame centre = shifted_frame(0, 3.0f, 0.0f, colour_a, unit_depth);
+    const ShiftedFrame prev   = shifted_frame(-3, 0.0f, 0.0f, colour_b, unit_depth);
+    const ImageBuf out = mcd::denoise(centre.input(), { prev.input() }, { -1 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    EXPECT_TRUE(testimg::bit_identical(out, centre.beauty)) << "no weight from frame -1";
+}
+
+TEST(Temporal, AnotherSurfaceGetsNoWeight)
+{
+    // Frame +1 has the same content and colour code but, right of column
+    // 12, a surface three times as far: only the left part averages.
+    const ShiftedFrame centre = shifted_frame(0, 0.0f, 0.0f, colour_a, unit_depth);
+    const ShiftedFrame next   = shifted_frame(0, 0.0f, 0.0f, colour_b,
+                                            [](int u, int) { return u > 12 ? 3.0f : 1.0f; });
+    const ImageBuf out = mcd::denoise(centre.input(), { next.input() }, { 1 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float expected = x > 12 ? colour_a(x, y) : (colour_a(x, y) + colour_b(x, y)) / 2;
+            EXPECT_NEAR(at(out, x, y, 0), expected, 1e-5f) << x << "," << y;
+        }
+}
+
+TEST(Temporal, SameForAnyThreadsSplitAndOrder)
+{
+    std::vector<ImageBuf> beauty, normal, motion;
+    for (int f = 0; f < 3; ++f) {
+        beauty.push_back(testimg::random_image(width, height, 4, 10 + f));
+        normal.push_back(testimg::wavy_normals(width, height, 20 + f));
+        motion.push_back(testimg::random_image(width, height, 4, 30 + f, -2.0f, 2.0f));
+    }
+    std::vector<mcd::FrameInput> frames;
+    for (int f = 0; f < 3; ++f) {
+        frames.push_back({ &beauty[f], {} });
+        frames.back().guides.normal = &normal[f];
+        frames.back().guides.motion = &motion[f];
+    }
+    const ImageBuf one = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, {}, 1);
+    ASSERT_FALSE(one.has_error()) << one.geterror();
+    EXPECT_TRUE(testimg::bit_identical(
+        one, mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, {}, 2)));
+    EXPECT_TRUE(testimg::bit_identical(
+        one, mcd::denoise(frames[1], { frames[2], frames[0] }, { 1, -1 }, {}, 0)));
+    ImageBuf split;
+    const ROI top(0, width, 0, height / 2, 0, 1, 0, 4), bottom(0, width, height / 2, height, 0, 1, 0, 4);
+    ASSERT_TRUE(mcd::denoise(split, frames[1], { frames[0], frames[2] }, { -1, 1 }, top, 1));
+    const ImageBuf rest = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, bottom, 2);
+    EXPECT_EQ(testimg::pixels(split, top), testimg::pixels(one, top));
+    EXPECT_EQ(testimg::pixels(rest, bottom), testimg::pixels(one, bottom));
+}
+
+TEST(Temporal, BadNeighboursAreNamed)
+{
+    const ImageBuf beauty = testimg::random_image(width, height, 3, 1);
+    const ImageBuf small  = testimg::random_image(width - 1, height, 3, 2);
+    const ImageBuf normal = testimg::wavy_normals(width, height, 3);
+    const ImageBuf motion2 = testimg::random_image(width, height, 2, 4);
+    const mcd::FrameInput centre { &beauty, {} };
+    mcd::FrameInput with_normal { &beauty, {} };
+    with_normal.guides.normal = &normal;
+    mcd::FrameInput bad_motion { &beauty, {} };
+    bad_motion.guides.motion = &motion2;
+    const auto error = [&](const mcd::FrameInput& c, const std::vector<mcd::FrameInput>& n,
+                           const std::vector<int>& o) {
+        ImageBuf dst;
+        EXPECT_FALSE(mcd::denoise(dst, c, n, o));
+        EXPECT_FALSE(dst.initialized());
+        return dst.geterror();
+    };
+    EXPECT_NE(error(centre, { { &small, {} } }, { 1 }).find("offset 1: data window"),
+              std::string::npos);
+    EXPECT_NE(error(centre, { with_normal }, { -2 }).find("offset -2: has not the centre"),
+              std::string::npos);
+    EXPECT_NE(error(centre, { centre, centre }, { 1, 1 }).find("distinct"), std::string::npos);
+    EXPECT_NE(error(centre, { centre }, { 0 }).find("non-zero"), std::string::npos);
+    EXPECT_NE(error(centre, { centre }, {}).find("1 neighbour frames but 0 offsets"),
+              std::string::npos);
+    EXPECT_NE(error(bad_motion, { bad_motion }, { 1 }).find("motion"), std::string::npos);
+    EXPECT_NE(error({}, {}, {}).find("no beauty"), std::string::npos);
+}
