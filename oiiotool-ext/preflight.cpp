@@ -97,12 +97,12 @@ void check_temporal(const Options& options)
     if (options.frames.empty())
         throw UsageError(format("--temporal {} : needs a frame sequence (a pattern input with --frames)",
                                 options.temporal));
-    const bool denoises = std::any_of(options.steps.begin(), options.steps.end(), [](const Step& step) {
-        return step.command && std::string(step.command->name) == "denoise";
+    auto first = std::find_if(options.steps.begin(), options.steps.end(), [](const Step& step) {
+        return step.command != nullptr;
     });
-    if (!denoises)
-        throw UsageError(format("--temporal {} : only --denoise works across frames; add --denoise",
-                                options.temporal));
+    if (first == options.steps.end() || std::string(first->command->name) != "denoise")
+        throw UsageError(format("--temporal {} : only --denoise works across frames, and it must be the first "
+                                "command (the neighbouring frames enter it as read)", options.temporal));
 }
 
 /// With --temporal, warns once when `frame`'s input has no motion guide but
