@@ -127,11 +127,33 @@ constexpr const char* motion_guide_text =
     "(`motionBack`) have no documented film scale and orientation; convert them to the convention above "
     "and give them with `--aov motion=FILE:X,Y,Z,W`.\n";
 
+/// What --temporal does with a sequence, and --compare over one.
+constexpr const char* temporal_text =
+    "\n### Across frames: `--temporal N`\n\n"
+    "With `--temporal N`, `--denoise` (which must then be the first command) denoises each frame with the "
+    "frames up to N before and after it: the cross-frame `mcdenoise::denoise` of temporal.h, each neighbour "
+    "carried by the `motion` guide when the files have one. The neighbours are the input files on disk within "
+    "N frame numbers, also outside `--frames`, so a shot split across runs, farm tasks or the Python batch's "
+    "chunks gives the same files as one run. Each file is read once: the frames are held in a window of up to "
+    "2N+1 frames while the frames run in order (the memory of 2N+1 frames' inputs and guides; `--memory-limit` "
+    "checks one frame). A neighbour missing on disk is warned about (`mcdtool WARNING: frame 1: --temporal : "
+    "neighbour frame 0 (shot.0000.exr) does not exist: left out`; expected at the ends of a shot) and left out, "
+    "so the frame is denoised with the neighbours that exist. A neighbour whose display or data window, beauty "
+    "channel count or set of guides differs from the frame's fails that frame with an error naming both. "
+    "`--temporal 0` is plain `--denoise`, byte for byte; N is at most 8.\n\n"
+    "With `--compare REF` over a sequence (`--compare 'ref.####.exr'`), each frame's metrics are printed as it "
+    "is done and, at the end, the figures of the whole run (frames in run order), for the input and the "
+    "result: the mean of the per-frame relMSE, the temporal error (the relMSE of the frame-to-frame "
+    "differences against the references' differences) and the flicker (the variance of each value across the "
+    "frames over the squared mean reference + 0.01; meaningful for a static shot), as "
+    "`mcdenoise::compare_sequence` (sequence_metrics.h) defines them.\n";
+
 /// The fixed examples that are about options rather than one command.
 std::vector<std::string> option_examples()
 {
     return { "mcdtool 'shot/beauty.####.exr' --frames 1-48 --median 7 -o 'clean/beauty.####.exr'",
              "mcdtool render.exr --median 7 --compare reference.exr",
+             "mcdtool 'shot/beauty.####.exr' --frames 1-48 --denoise --temporal 2 -o 'clean/beauty.####.exr'",
              "mcdtool render.exr --median 7 -o clean.exr --preview before_after.png",
              "mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N -v --median 3 -o out.exr",
              "mcdtool render.exr --median 7 -d half --compression dwaa -o clean.exr --runstats" };
@@ -238,6 +260,7 @@ std::string help_markdown()
           "is drawn on stderr when it is a terminal. A frame that fails is reported with its number and "
           "the others are still written; the exit status is then 1. A sequence ends with a summary on "
           "stderr, terminal or not: `mcdtool: 48 frames: 40 written, 0 skipped, 8 failed`.\n";
+    md += temporal_text;
     md += "\n## Examples\n\n```\n";
     for (const Command& command : command_table())
         md += std::string(command.example) + "\n";
