@@ -89,6 +89,16 @@ void report_channels(const std::string& input_path, const ImageBuf& input, const
     }
 }
 
+/// With -v and --temporal: the neighbouring frames --denoise takes.
+void report_neighbours(int frame, const std::vector<Neighbour>& neighbours)
+{
+    std::vector<std::string> frames;
+    for (const Neighbour& n : neighbours)
+        frames.push_back(std::to_string(frame + n.offset));
+    std::printf("mcdtool: --temporal : frame %d with frames %s\n", frame,
+                frames.empty() ? "(none on disk)" : OIIO::Strutil::join(frames, ", ").c_str());
+}
+
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed.
 ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, int nthreads, bool verbose,
@@ -159,6 +169,8 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     const Guides& guides = inputs.guides;
     if (options.verbose)
         report_channels(input_path, input, found, guides);
+    if (options.verbose && options.temporal > 0 && frame)
+        report_neighbours(*frame, loaded.neighbours);
     for (const Step& step : options.steps)  // before any work: fail fast on a missing guide
         if (step.command)
             require_guides(*step.command, guides, input_path, input.spec(), found);

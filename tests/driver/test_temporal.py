@@ -79,8 +79,8 @@ def test_missing_neighbour_is_warned_about_and_left_out(tmp_path):
     full = run(shot, "--frames", "2", "--denoise", "--temporal", 1, "-o", tmp_path / "full.####.exr")
     assert full.code == 0 and "WARNING" not in full.err, full
     os.remove(tmp_path / "in/shot.0003.exr")
-    gap = run(shot, "--frames", "2", "--denoise", "--temporal", 1, "-o", tmp_path / "gap.####.exr")
-    assert gap.code == 0, gap
+    gap = run(shot, "--frames", "2", "--denoise", "--temporal", 1, "-v", "-o", tmp_path / "gap.####.exr")
+    assert gap.code == 0 and "--temporal : frame 2 with frames 1\n" in gap.out, gap
     assert "frame 2: --temporal : neighbour frame 3" in gap.err and "does not exist: left out" in gap.err, gap
     assert not np.array_equal(beauty(tmp_path / "full.0002.exr"), beauty(tmp_path / "gap.0002.exr"))
     # frame 2 with only frame 1 is what it would be if frame 3 were never rendered
