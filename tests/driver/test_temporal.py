@@ -87,7 +87,9 @@ def test_missing_neighbour_is_warned_about_and_left_out(tmp_path):
     shutil.rmtree(tmp_path / "in")
     render(tmp_path / "in", frames=range(1, 3))
     alone = run(shot, "--frames", "2", "--denoise", "--temporal", 1, "-o", tmp_path / "alone.####.exr")
-    assert (tmp_path / "alone.0002.exr").read_bytes() == (tmp_path / "gap.0002.exr").read_bytes(), alone
+    assert alone.code == 0, alone
+    # pixels, not bytes: the re-rendered inputs carry another render time in their metadata
+    assert np.array_equal(beauty(tmp_path / "alone.0002.exr"), beauty(tmp_path / "gap.0002.exr"))
 
 
 def test_neighbour_of_another_resolution_fails_that_frame(tmp_path):
