@@ -125,7 +125,7 @@ def test_arnold_motionvector_is_refused_with_a_warning(tmp_path):
     r = run(tmp_path / "arnold.####.exr", "--frames", "1-2", "--denoise", "--temporal", 1, "-v",
             "-o", tmp_path / "o.####.exr")
     assert r.code == 0, r
-    assert r.err.count("motionvector") == 1 and "Arnold's motionvector AOV" in r.err, r
+    assert r.err.count("Arnold's motionvector AOV") == 1 and "is not used as the motion guide" in r.err, r
     assert "motion   <-" not in r.out
 
 
