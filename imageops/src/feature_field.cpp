@@ -128,7 +128,7 @@ void FeatureField::weights_row(int y, int x0, int n, int dx, int dy, const float
                                float scale, float* w, const FeatureField& other) const
 {
     using OIIO::simd::vfloat8;
-    const size_t pc = dims.offset(x0, y), pq = dims.offset(x0 + dx, y + dy);
+    const size_t pc = dims.offset(x0, y), pq = other.dims.offset(x0 + dx, y + dy);
     const vfloat8 s(scale);
     const bool by_id = !ids.values.empty();
     const Id* ka     = by_id ? ids.values.data() + pc : nullptr;

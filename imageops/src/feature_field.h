@@ -49,7 +49,8 @@ struct FeatureField {
     void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
                      float* w) const;
     /// `weights_row` with the neighbour's features read from `other` (the
-    /// same dimensions and region: another frame in this one's pixel grid).
+    /// same dimensions, in the same pixel grid, over a region holding the
+    /// neighbours: another frame carried into this one's grid).
     void weights_row(int y, int x0, int n, int dx, int dy, const float* e, float scale,
                      float* w, const FeatureField& other) const;
 };

@@ -5,10 +5,12 @@
 #include "guides.h"
 #include "window.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mcdenoise {
 
+using OIIO::ImageBuf;
 using OIIO::ROI;
 
 namespace {
@@ -34,7 +36,8 @@ void step_vector(const GuideChannels& motion, int x, int y, bool forward, float&
 WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
                         const ROI& region, const ROI& source_dw, int nthreads)
 {
-    WarpMap map { Plane<int32_t>(region), Plane<int32_t>(region) };
+    WarpMap map { Plane<int32_t>(region), Plane<int32_t>(region), Plane<float>(region),
+                  Plane<float>(region) };
     const bool forward = offset > 0;
     const bool still   = steps.empty() || !steps.front();
     parallel_rows(region, nthreads, [&](int y) {
@@ -52,6 +55,8 @@ WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offs
             const bool ok = inside(source_dw, qx, qy);
             map.xs.at(x, y) = ok ? qx : WarpMap::no_source;
             map.ys.at(x, y) = ok ? qy : WarpMap::no_source;
+            map.dx.at(x, y) = px - float(qx);
+            map.dy.at(x, y) = py - float(qy);
         }
     });
     return map;
@@ -76,49 +81,124 @@ template Plane<Id> warp_plane(const Plane<Id>&, const WarpMap&, const ROI&, Id);
 
 namespace {
 
-// Channel `values[c]` of planes over `from` as a plane of its own.
-Plane<float> channel(const std::vector<LargeVector<float>>& values, size_t c, const ROI& from)
+// The bilinear taps around pixel i's source in `from`: up to four
+// (index, weight), the weights normalised over the taps inside; with
+// `squared`, each normalised weight squared.
+int bilinear_taps(const WarpMap& map, size_t i, const ROI& from, bool squared, size_t* at,
+                  float* w)
 {
-    Plane<float> p;
-    p.region = from;
-    p.values = values[c];
-    return p;
+    const float fx = map.dx.values[i], fy = map.dy.values[i];
+    const int x0 = map.xs.values[i] + (fx < 0.0f ? -1 : 0);
+    const int y0 = map.ys.values[i] + (fy < 0.0f ? -1 : 0);
+    const float ax = fx < 0.0f ? 1.0f + fx : fx, ay = fy < 0.0f ? 1.0f + fy : fy;
+    int n       = 0;
+    float total = 0.0f;
+    for (int ty = 0; ty < 2; ++ty)
+        for (int tx = 0; tx < 2; ++tx) {
+            const float wt = (tx ? ax : 1.0f - ax) * (ty ? ay : 1.0f - ay);
+            if (wt <= 0.0f || !inside(from, x0 + tx, y0 + ty))
+                continue;
+            at[n] = pixel_offset(from, x0 + tx, y0 + ty);
+            w[n++] = wt;
+            total += wt;
+        }
+    for (int k = 0; k < n; ++k)
+        w[k] = squared ? (w[k] / total) * (w[k] / total) : w[k] / total;
+    return n;
 }
 
 std::vector<LargeVector<float>> warp_channels(const std::vector<LargeVector<float>>& values,
                                               const ROI& from, const WarpMap& map,
-                                              const ROI& region)
+                                              const ROI& region, bool squared)
 {
-    std::vector<LargeVector<float>> out;
-    for (size_t c = 0; c < values.size(); ++c)
-        out.push_back(warp_plane(channel(values, c, from), map, region, 0.0f).values);
+    std::vector<LargeVector<float>> out(values.size(), LargeVector<float>(plane_size(region)));
+    for (int y = region.ybegin; y < region.yend; ++y)
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
+            size_t at[4];
+            float w[4];
+            const int n = map.has_source(i) ? bilinear_taps(map, i, from, squared, at, w) : 0;
+            for (size_t c = 0; c < values.size(); ++c) {
+                float v = 0.0f;
+                for (int k = 0; k < n; ++k)
+                    v += w[k] * values[c][at[k]];
+                out[c][o] = v;
+            }
+        }
     return out;
 }
 
 }  // namespace
 
-Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region)
+Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region,
+                          bool variance)
 {
     Planes<float> out;
     out.region = region;
-    out.values = warp_channels(src.values, src.region, map, region);
-    out.finite = warp_channels(src.finite, src.region, map, region);
+    out.values = warp_channels(src.values, src.region, map, region, variance);
+    out.finite = warp_channels(src.finite, src.region, map, region, false);
     return out;
 }
 
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const ROI& region)
+ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const ROI& region,
+                         bool variance)
 {
-    return { warp_planes(src.colour, map, region),
-             warp_plane(src.luminance, map, region, 0.0f) };
+    Planes<float> lum;
+    lum.region = src.luminance.region;
+    lum.values.push_back(src.luminance.values);
+    Plane<float> luminance(region);
+    luminance.values = std::move(warp_planes(lum, map, region, variance).values.front());
+    return { warp_planes(src.colour, map, region, variance), std::move(luminance) };
 }
 
 FeatureField warp_features(const FeatureField& src, const WarpMap& map, const ROI& region)
 {
     FeatureField out;
-    out.dims = warp_planes(src.dims, map, region);
+    out.dims.region = region;
+    for (const LargeVector<float>& dim : src.dims.values) {
+        Plane<float> plane;
+        plane.region = src.dims.region;
+        plane.values = dim;
+        out.dims.values.push_back(warp_plane(plane, map, region, 0.0f).values);
+    }
     if (!src.ids.values.empty())
         out.ids = warp_plane(src.ids, map, region, no_guide_id);
     return out;
+}
+
+bool load_motions(const char* op, ImageBuf& dst, const FrameInput& centre,
+                  const std::vector<FrameInput>& neighbours, int nthreads,
+                  std::vector<std::unique_ptr<GuideChannels>>& motions)
+{
+    motions.clear();
+    for (size_t i = 0; i <= neighbours.size(); ++i) {
+        const FrameInput& f = i == 0 ? centre : neighbours[i - 1];
+        motions.emplace_back();
+        if (!f.guides.motion)
+            continue;
+        motions.back() = std::make_unique<GuideChannels>();
+        if (!load_guide_channels(op, dst, *f.guides.motion, f.beauty->roi(), nthreads,
+                                 *motions.back()))
+            return false;
+    }
+    return true;
+}
+
+std::vector<const GuideChannels*> motion_steps(
+    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
+    int offset)
+{
+    std::vector<const GuideChannels*> steps;
+    const int sign = offset > 0 ? 1 : -1;
+    for (int k = 0; k < sign * offset; ++k) {
+        const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
+        if (k == 0)
+            steps.push_back(motions.front().get());
+        else
+            steps.push_back(at == offsets.end() ? nullptr
+                                                : motions[1 + size_t(at - offsets.begin())].get());
+    }
+    return steps;
 }
 
 Plane<float> source_mask(const WarpMap& map, const ROI& region)

@@ -3,19 +3,25 @@
 // frame), for the cross-frame denoise.
 #pragma once
 
+#include <mcdenoise/temporal.h>
+
 #include "feature_field.h"
 #include "plane.h"
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace mcdenoise {
 
 /// Where each pixel of a region of the centre frame lies in a neighbour
-/// frame: the column and row of its source pixel, or `no_source`.
+/// frame: the column and row of its source pixel (the nearest to where the
+/// motion leads), or `no_source`, and how far from that pixel's centre the
+/// motion leads (`dx`, `dy` in [-0.5, 0.5]).
 struct WarpMap {
     Plane<int32_t> xs, ys;
+    Plane<float> dx, dy;
 
     static constexpr int32_t no_source = std::numeric_limits<int32_t>::min();
     bool has_source(size_t i) const { return xs.values[i] != no_source; }
@@ -33,18 +39,37 @@ struct WarpMap {
 WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
                         const OIIO::ROI& region, const OIIO::ROI& source_dw, int nthreads);
 
+/// The motion guide of every frame (the centre first, then `neighbours` in
+/// order) over its data window; null for a frame without one. On failure
+/// sets `dst`'s error prefixed with `op`.
+bool load_motions(const char* op, OIIO::ImageBuf& dst, const FrameInput& centre,
+                  const std::vector<FrameInput>& neighbours, int nthreads,
+                  std::vector<std::unique_ptr<GuideChannels>>& motions);
+
+/// The `steps` of `motion_warp_map` from the centre to the frame at
+/// `offset`, from `motions` (as `load_motions` gives them for neighbours at
+/// `offsets`): null for a frame on the way that is missing or has no motion.
+std::vector<const GuideChannels*> motion_steps(
+    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
+    int offset);
+
 /// The values of `src` at each pixel's source, over `region` (inside the
 /// map's region); `fill` where there is none or the source lies outside
 /// `src`'s region.
 template<class T>
 Plane<T> warp_plane(const Plane<T>& src, const WarpMap& map, const OIIO::ROI& region, T fill);
 
-/// `warp_plane` for every channel of `src` (and its finite mask, 0 where
-/// there is no source).
-Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region);
+/// Every channel of `src` (and its finite mask) sampled bilinearly where
+/// the motion leads (the taps inside `src`'s region, their weights
+/// normalised), 0 where there is no source. With `variance`, the variance
+/// of that sample instead: the taps' values times their squared weights.
+Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region,
+                          bool variance = false);
 
-/// Colour planes and luminance carried by `map` over `region`.
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region);
+/// Colour planes and luminance carried by `map` over `region` as
+/// `warp_planes` carries them (with `variance`, as a variance).
+ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region,
+                         bool variance = false);
 
 /// Feature dimensions and ids carried by `map` over `region`: no source
 /// gives an id equal to no other.

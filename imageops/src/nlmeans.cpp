@@ -31,6 +31,8 @@ constexpr float distance_guard = 1e-10f;
 // What every chunk reads: the frames' windows, the filtered frame's first.
 struct NlmInputs {
     const std::vector<NlmFrame>& frames;
+    const ColourField& colour;      // the filtered pixels' patches
+    const VarianceField& variance;  // and their variance
     ROI roi, dw;
     int f;
     float k2;  // strength^2
@@ -79,12 +81,11 @@ inline int patch_count(int p, int d, int f, int lo, int hi)
 void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0, int n,
                  std::vector<WeightedSums>& sums)
 {
-    const NlmFrame& p = in.frames.front();
     const ROI& dw     = in.dw;
     const int r = q.search_radius, f = in.f;
     const int pw = n + 2 * f;          // distance rows: x from x0 - f
     const int ph = (y1 - y0) + 2 * f;  // rows from y0 - f
-    const int nc = p.colour->nchannels();
+    const int nc = in.colour.nchannels();
     const float channel_mean = 1.0f / float(nc);
     std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
         e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n));
@@ -103,9 +104,9 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
                 const int m = xb - xa;
                 DistanceRows rows;
                 for (int c = 0; c < nc; ++c) {
-                    rows.u_p[c] = p.colour->colour.from(c, xa, yy);
+                    rows.u_p[c] = in.colour.colour.from(c, xa, yy);
                     rows.u_q[c] = q.colour->colour.from(c, xa + dx, yy + dy);
-                    rows.v_p[c] = p.variance->colour.from(c, xa, yy);
+                    rows.v_p[c] = in.variance.colour.from(c, xa, yy);
                     rows.v_q[c] = q.variance->colour.from(c, xa + dx, yy + dy);
                 }
                 if (nc == 3)
@@ -203,25 +204,36 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
     return nlmeans_frames(op, dst, beauty,
                           { &beauty, guides.object_id, guides.normal, guides.depth,
                             guides.albedo, guides.variance },
-                          frames, patch_radius, strength, roi, nthreads);
+                          frames, fin.colour, fin.variance, patch_radius, strength, roi,
+                          nthreads);
 }
 
-bool nlmeans_frames(const char* op, ImageBuf& dst, const ImageBuf& like,
-                    std::initializer_list<const ImageBuf*> inputs,
-                    const std::vector<NlmFrame>& frames, int patch_radius, float strength,
-                    const ROI& roi, int nthreads)
+void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
+                    const VarianceField& variance, const ROI& dw, int patch_radius,
+                    float strength, int nthreads, ResultPixels& result)
 {
-    ResultPixels result;
-    if (!begin_result(op, dst, like, inputs, roi, result))
-        return false;
-    const NlmInputs in { frames, roi, like.roi(), patch_radius, strength * strength };
-    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
+    const NlmInputs in { frames, colour, variance, result.roi, dw, patch_radius,
+                         strength * strength };
+    OIIO::ImageBufAlgo::parallel_image(result.roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
                 nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, result);
             });
     });
+}
+
+bool nlmeans_frames(const char* op, ImageBuf& dst, const ImageBuf& like,
+                    std::initializer_list<const ImageBuf*> inputs,
+                    const std::vector<NlmFrame>& frames, const ColourField& colour,
+                    const VarianceField& variance, int patch_radius, float strength,
+                    const ROI& roi, int nthreads)
+{
+    ResultPixels result;
+    if (!begin_result(op, dst, like, inputs, roi, result))
+        return false;
+    nlmeans_frames(frames, colour, variance, like.roi(), patch_radius, strength, nthreads,
+                   result);
     return finish_result(op, dst, result);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "feature_field.h"
+#include "operation.h"
 #include "plane.h"
 
 #include <vector>
@@ -32,14 +33,22 @@ struct NlmFrame {
 
 /// The NL-means average of `roi` (channels of `frames`' values) over the
 /// windows of every frame in order, with patch radius `patch_radius` and
-/// `strength`, the distances normalised by the variance of `frames[0]`
-/// (the filtered frame, `own`) and of each frame's own pixels. `dw` is the
+/// `strength`: the patches of the filtered pixels are read from `colour`
+/// (over the ROI grown by the patch radius) with the variance `variance`,
+/// compared with each frame's own patches and variance. `dw` is the
 /// filtered frame's data window. Writes `dst` as `nlmeans` does, with
 /// `like` as the image the result is shaped after and `inputs` for in-place
 /// detection.
+/// `nlmeans_frames` into `result` (over `result.roi`, whose channels select
+/// the values'), `dw` the filtered frame's data window.
+void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
+                    const VarianceField& variance, const OIIO::ROI& dw, int patch_radius,
+                    float strength, int nthreads, ResultPixels& result);
+
 bool nlmeans_frames(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& like,
                     std::initializer_list<const OIIO::ImageBuf*> inputs,
-                    const std::vector<NlmFrame>& frames, int patch_radius, float strength,
+                    const std::vector<NlmFrame>& frames, const ColourField& colour,
+                    const VarianceField& variance, int patch_radius, float strength,
                     const OIIO::ROI& roi, int nthreads);
 
 }  // namespace mcdenoise

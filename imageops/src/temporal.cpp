@@ -1,6 +1,7 @@
 // temporal.cpp: the cross-frame denoise: each frame prepared as `denoise`
-// prepares it, the neighbours carried into the centre's pixel grid, one
-// NL-means average over the centre's window and the neighbours' windows.
+// prepares it, the neighbours carried into the centre's pixel grid, the
+// temporal guide, then one NL-means average over the centre's window and
+// the neighbours' windows.
 #include <mcdenoise/temporal.h>
 
 #include "denoise_frame.h"
@@ -9,6 +10,7 @@
 #include "guides.h"
 #include "nlmeans_frames.h"
 #include "operation.h"
+#include "temporal_guide.h"
 #include "window.h"
 
 #include <algorithm>
@@ -29,7 +31,7 @@ constexpr const char* op_name = "denoise";
 // centre's regions.
 struct Neighbour {
     DenoiseFrame frame;
-    FeatureInputs own;  // over its data window, temporal feature scales
+    FeatureInputs own;  // over its data window
     ColourField colour;
     VarianceField variance;
     FeatureField features;
@@ -37,12 +39,12 @@ struct Neighbour {
     Plane<float> usable;
 };
 
-// Which guides a frame has, as flags in the order of `Guides`.
+// Which guides a frame has that `denoise` reads, as flags in the order of
+// `Guides`.
 std::string guide_set(const Guides& g)
 {
     std::string s;
-    for (const ImageBuf* p :
-         { g.object_id, g.normal, g.depth, g.albedo, g.variance, g.half_a, g.half_b })
+    for (const ImageBuf* p : { g.normal, g.depth, g.albedo, g.variance, g.half_a, g.half_b })
         s += p ? '1' : '0';
     return s;
 }
@@ -63,11 +65,9 @@ bool check_frame(ImageBuf& dst, const FrameInput& frame, const std::string& what
         dst.errorfmt("{}: no beauty", op);
         return false;
     }
-    Guides read = frame.guides;
-    return check_denoise_guides(op.c_str(), dst, *frame.beauty, read, roi)
-           && (!read.object_id
-               || check_guide(op.c_str(), "object_id", dst, *read.object_id, 1, roi))
-           && (!read.motion || check_guide(op.c_str(), "motion", dst, *read.motion, 4, roi));
+    return check_denoise_guides(op.c_str(), dst, *frame.beauty, frame.guides, roi)
+           && (!frame.guides.motion
+               || check_guide(op.c_str(), "motion", dst, *frame.guides.motion, 4, roi));
 }
 
 bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
@@ -102,50 +102,6 @@ bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
     return true;
 }
 
-// The guides the cross-frame comparison reads: the average's, with the
-// object id (a hard rule between frames).
-Guides compared_guides(const DenoiseFrame& frame, const Guides& given)
-{
-    Guides g    = frame.guides;
-    g.object_id = given.object_id;
-    return g;
-}
-
-// Load the motion of every frame that has one, over its data window.
-bool load_motions(ImageBuf& dst, const FrameInput& centre,
-                  const std::vector<FrameInput>& neighbours, int nthreads,
-                  std::vector<std::unique_ptr<GuideChannels>>& motions)
-{
-    motions.clear();
-    for (size_t i = 0; i <= neighbours.size(); ++i) {
-        const FrameInput& f = i == 0 ? centre : neighbours[i - 1];
-        motions.emplace_back();
-        if (!f.guides.motion)
-            continue;
-        motions.back() = std::make_unique<GuideChannels>();
-        if (!load_guide_channels(op_name, dst, *f.guides.motion, f.beauty->roi(), nthreads,
-                                 *motions.back()))
-            return false;
-    }
-    return true;
-}
-
-// The motion steps from the centre to the frame at `offset`: the motion of
-// each frame on the way, null where unknown.
-std::vector<const GuideChannels*> motion_steps(
-    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
-    int offset)
-{
-    std::vector<const GuideChannels*> steps;
-    const int sign = offset > 0 ? 1 : -1;
-    for (int k = 0; k < sign * offset; ++k) {
-        const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
-        const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size() : 1 + size_t(at - offsets.begin());
-        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
-    }
-    return steps;
-}
-
 // Prepare neighbour `n` over its data window and carry it into `centre`'s
 // regions through `map`.
 bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& centre,
@@ -155,15 +111,14 @@ bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& cen
     dw.chbegin = 0;
     dw.chend   = n.beauty->nchannels();
     if (!prepare_denoise_frame(dst, *n.beauty, n.guides, dw, nthreads, out.frame)
-        || !load_feature_inputs(op_name, dst, out.frame.clamped,
-                                compared_guides(out.frame, n.guides), temporal_feature_sigmas,
-                                dw, dw, nthreads, out.own))
+        || !load_feature_inputs(op_name, dst, out.frame.clamped, out.frame.guides,
+                                temporal_feature_sigmas, dw, dw, nthreads, out.own))
         return false;
     const ROI search = centre.values.region;
-    out.colour   = warp_colour(out.own.colour, map, centre.colour.region());
-    out.variance = warp_colour(out.own.variance, map, centre.variance.region());
+    out.colour   = warp_colour(out.own.colour, map, centre.colour.region(), false);
+    out.variance = warp_colour(out.own.variance, map, centre.variance.region(), true);
     out.features = warp_features(out.own.features, map, search);
-    out.values   = warp_planes(out.own.values, map, search);
+    out.values   = warp_planes(out.own.values, map, search, false);
     out.usable   = source_mask(map, search);
     out.own      = FeatureInputs();
     return true;
@@ -198,7 +153,6 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
         return false;
     DenoiseFrame c;
     FeatureInputs fin;
-    FeatureField compared;
     if (!prepare_denoise_frame(dst, beauty, centre.guides, denoise_region(beauty, roi), nthreads,
                                c))
         return false;
@@ -206,11 +160,9 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
     const ROI search  = grow_and_clip(roi, denoise_search_radius, dw);
     const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
     std::vector<std::unique_ptr<GuideChannels>> motions;
-    if (!load_feature_inputs(op_name, dst, c.clamped, c.guides, denoise_feature_sigmas, search,
+    if (!load_feature_inputs(op_name, dst, c.clamped, c.guides, temporal_feature_sigmas, search,
                              patches, nthreads, fin)
-        || !load_feature_field(op_name, dst, compared_guides(c, centre.guides),
-                               temporal_feature_sigmas, search, nthreads, compared)
-        || !load_motions(dst, centre, neighbours, nthreads, motions))
+        || !load_motions(op_name, dst, centre, neighbours, nthreads, motions))
         return false;
     // Neighbours in the order of their offsets, so the sums do not depend
     // on the order they are listed in.
@@ -230,14 +182,22 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
         values.push_back(&loaded.back()->values);
     }
     align_masks(values);
-    const int radius = centre.guides.motion ? temporal_search_radius : temporal_still_search_radius;
+    const int radius = centre.guides.motion ? temporal_search_radius
+                                            : temporal_still_search_radius;
     std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features, &fin.features,
                                      &fin.values, nullptr, denoise_search_radius, true } };
     for (const auto& n : loaded)
-        frames.push_back({ &n->colour, &n->variance, &n->features, &compared, &n->values,
+        frames.push_back({ &n->colour, &n->variance, &n->features, &fin.features, &n->values,
                            &n->usable, radius, false });
+    // The patches and features every candidate is compared with: the
+    // centre's, averaged over the frames that match them.
+    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(roi, denoise_patch_radius, dw),
+                                               dw, denoise_patch_radius, c.strength, nthreads);
+    for (NlmFrame& f : frames)
+        f.centre_features = &guide.features;
     if (!nlmeans_frames(op_name, dst, c.clamped, { centre.beauty, &c.clamped }, frames,
-                        denoise_patch_radius, c.strength, roi, nthreads))
+                        guide.colour, guide.variance, denoise_patch_radius, c.strength, roi,
+                        nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
     return true;

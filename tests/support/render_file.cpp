@@ -46,6 +46,7 @@ Render read_render(const std::string& path)
     r.variance   = channels_named(file, { "var.R", "var.G", "var.B" }, r.error);
     r.half_a     = channels_named(file, { "A.R", "A.G", "A.B" }, r.error);
     r.half_b     = channels_named(file, { "B.R", "B.G", "B.B" }, r.error);
+    r.motion = channels_named(file, { "motion.X", "motion.Y", "motion.Z", "motion.W" }, r.error);
     return r;
 }
 

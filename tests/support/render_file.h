@@ -17,6 +17,7 @@ namespace testimg {
 struct Render {
     OIIO::ImageBuf beauty, object_id, reflect_id, normal, depth, albedo;
     OIIO::ImageBuf variance, half_a, half_b;
+    OIIO::ImageBuf motion;  ///< motion.X,Y,Z,W (not among `guides()`)
     std::string error;  ///< set when the file could not be read
 
     /// Every guide of this render, for the feature-guided filters.
@@ -27,7 +28,7 @@ struct Render {
 };
 
 /// Read `path` (testrender channel names: R,G,B, id, reflid, N.*, Z, albedo.*,
-/// var.*, A.*, B.*).
+/// var.*, A.*, B.*, motion.*).
 Render read_render(const std::string& path);
 
 /// A filter of the report applied to a render: returns the filtered beauty.

@@ -23,28 +23,40 @@ struct FrameInput {
 /// out). With no neighbours the result is bit-identical to
 /// `denoise(*centre.beauty, centre.guides, roi, nthreads)`.
 ///
-/// Every frame goes through `denoise`'s first steps on its own (the
-/// firefly clamp, the variance from its guide, halves or estimate). Each
-/// neighbour is then carried into the centre's pixel grid through the
-/// motion guides (nearest pixel; the vectors of the frames in between are
-/// chained for |offset| > 1, the last one known standing in for a frame
-/// that is left out, or without motion on it), or taken as it is when the
-/// centre has no motion guide. The NL-means average of `denoise` then
-/// extends across frames: besides the centre's own search window
-/// (radius 5), each neighbour pixel within `temporal_search_radius` (with
-/// motion; `temporal_still_search_radius` without) is weighed by the
-/// variance-normalised distance of its patch to the centre's patch and by
-/// the feature weight of features.h with the fall-offs
-/// `temporal_feature_sigmas` between the centre's features and its own, so
-/// a pixel the neighbour shows on another surface (disoccluded, another
-/// normal, depth, albedo or object id) or in another colour (a moving
-/// shadow) gets no weight. A pixel carried from outside the neighbour's
-/// data window gets none either. Every channel is averaged with the same
-/// weights.
+/// 1. Every frame goes through `denoise`'s first steps on its own: the
+///    firefly clamp, and the variance from its guide, halves or estimate.
+/// 2. Each neighbour is carried into the centre's pixel grid through the
+///    motion guides: colour, variance and every channel sampled bilinearly
+///    where the motion leads (the variance as that of the sample), the
+///    features at the nearest pixel. For |offset| > 1 the vectors of the
+///    frames in between are chained; a frame on the way that is left out
+///    or has no motion guide repeats the previous step's vector. Without a
+///    motion guide on the centre the neighbours are taken as they are, and
+///    the search window in them is wider.
+/// 3. The temporal guide: at each pixel, the centre's colour and features
+///    averaged with each neighbour's at that pixel, the centre weighing 1
+///    and a neighbour its NL-means weight against the centre (its patch's
+///    variance-normalised distance and its features, as below). It is the
+///    centre where no neighbour matches (disocclusions, moving shadows),
+///    and a cleaner, steadier centre where they do.
+/// 4. `denoise`'s NL-means average extends across frames: the centre's own
+///    window (radius 5) and each neighbour's window of radius
+///    `temporal_search_radius` (`temporal_still_search_radius` without
+///    motion), every candidate weighed by the variance-normalised distance
+///    of its patch to the guide's patch and by the feature weight of
+///    features.h (fall-offs `temporal_feature_sigmas`) between the guide's
+///    features and its own. So a neighbour pixel on another surface (another
+///    normal, depth or albedo) or in another colour (a moving shadow) gets
+///    no weight, nor does one carried from outside the neighbour's data
+///    window. Every channel is averaged with the same weights. The object
+///    id is not read, as in `denoise`.
 ///
 /// Every neighbour must have the centre's data window, channel count and
-/// set of guides (each covering its data window); `offsets` must be
-/// distinct and non-zero. The result covers `roi` of the centre frame.
+/// set of the guides `denoise` reads (normal, depth, albedo, variance,
+/// halves), each covering its data window; a motion guide has 4 channels;
+/// `offsets` must be distinct and non-zero. The order of the neighbours
+/// does not change the result. The `dst` attribute
+/// `mcdenoise:denoise_frames` is the count of frames used.
 ImageBuf denoise(const FrameInput& centre, const std::vector<FrameInput>& neighbours,
                  const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
@@ -56,9 +68,10 @@ constexpr int temporal_search_radius = 2;
 /// Search radius in each neighbour frame when the centre has no motion
 /// guide: the patch search alone finds the moved content.
 constexpr int temporal_still_search_radius = 5;
-/// Feature fall-offs between the centre and a neighbour frame: the
-/// defaults of `FeatureSigmas`, tighter than `denoise_feature_sigmas`,
-/// since the same surface seen in two frames has the same features.
-constexpr FeatureSigmas temporal_feature_sigmas {};
+/// Feature fall-offs of the cross-frame denoise, for every frame: albedo
+/// and normal as `denoise_feature_sigmas` (their guides are noisy at low
+/// sample counts too), depth as tight as `FeatureSigmas`' default: across
+/// frames a depth change is the surest sign of a disocclusion.
+constexpr FeatureSigmas temporal_feature_sigmas { 0.3f, 0.6f, 0.1f };
 
 MCDENOISE_API_END
