@@ -22,12 +22,14 @@ std::string window_text(const OIIO::ROI& roi)
     return format("x [{},{}) y [{},{})", roi.xbegin, roi.xend, roi.ybegin, roi.yend);
 }
 
-/// "normal, depth, motion": the guide roles present in `guides`.
+/// "normal, depth": the guide roles present in `guides` besides motion
+/// (which a neighbour may lack: temporal.h repeats the last vector known).
 std::string role_list(const Guides& guides)
 {
     std::vector<std::string> names;
     for (const auto& [role, image] : guides.images)
-        names.push_back(role_info(role).name);
+        if (role != Role::motion)
+            names.push_back(role_info(role).name);
     return names.empty() ? "none" : OIIO::Strutil::join(names, ", ");
 }
 

@@ -26,7 +26,8 @@ public:
 
     /// The frames `frame` +- 1..N whose input file exists, read unless held
     /// (`centre(frame)` first), each checked against the centre: the same
-    /// display and data window, beauty channel count and guides, else
+    /// display and data window, beauty channel count and guides (a
+    /// neighbour may lack the motion guide), else
     /// RunError naming both frames. A neighbour missing on disk is warned
     /// about on stderr and left out.
     std::vector<Neighbour> neighbours(int frame);
