@@ -74,6 +74,13 @@ def test_split_runs_write_the_same_files_as_one_run(tmp_path):
         assert (tmp_path / f"one/o.{f:04d}.exr").read_bytes() == (tmp_path / f"split/o.{f:04d}.exr").read_bytes()
 
 
+def test_each_file_is_read_once(tmp_path):
+    """The window holds the frames: 5 frames with 2 neighbours each side read 5 files, not 5 x 5."""
+    shot = render(tmp_path / "in")
+    r = run(shot, "--frames", "1-5", "--denoise", "--temporal", 2, "-o", tmp_path / "o.####.exr", "--runstats")
+    assert r.code == 0 and re.search(r"read time +[0-9.]+ s \(5 files\)", r.out), r
+
+
 def test_missing_neighbour_is_warned_about_and_left_out(tmp_path):
     shot = render(tmp_path / "in", frames=range(1, 4))
     full = run(shot, "--frames", "2", "--denoise", "--temporal", 1, "-o", tmp_path / "full.####.exr")
