@@ -111,6 +111,14 @@ int parse_threads(const std::string& text)
     return OIIO::Strutil::stoi(text);
 }
 
+/// Converts a --temporal argument (0..mcdenoise::max_temporal_radius).
+int parse_temporal(const std::string& text)
+{
+    if (!is_integer(text) || OIIO::Strutil::stoi(text) < 0 || OIIO::Strutil::stoi(text) > max_temporal_radius)
+        throw UsageError(format("--temporal : expected a frame count 0..{}, got '{}'", max_temporal_radius, text));
+    return OIIO::Strutil::stoi(text);
+}
+
 /// Converts a --memory-limit argument (MiB, >= 1).
 uint64_t parse_memory_limit(const std::string& text)
 {
@@ -157,6 +165,11 @@ const std::vector<OptionSpec>& option_table()
               parse_frame_list(a[0]);
               o.frames = a[0];
           } },
+        { "temporal", { "N" }, "Sequences",
+          "With --frames and --denoise: denoise each frame with the N frames before and after it (0: each "
+          "frame alone). Neighbours are read from the files on disk, also outside --frames, so a sequence "
+          "split across runs gives the same files; a missing neighbour is warned about and left out.",
+          [](Options& o, const std::vector<std::string>& a) { o.temporal = parse_temporal(a[0]); } },
         { "skip-existing", {}, "Sequences", "Skip frames whose outputs all exist already.",
           [](Options& o, const std::vector<std::string>&) { o.skip_existing = true; } },
         { "compare", { "REF" }, "Diagnostics",

@@ -10,17 +10,24 @@ namespace mcdtool {
 
 using OIIO::Strutil::fmt::format;
 
+namespace {
+
+/// The guide for `role` in `guides`, or nullptr.
+const ImageBuf* present(const Guides& guides, Role role)
+{
+    const auto found = guides.images.find(role);
+    return found == guides.images.end() ? nullptr : &found->second;
+}
+
+}  // namespace
+
 int Call::integer(size_t i) const { return OIIO::Strutil::stoi(values.at(i)); }
 
 float Call::number(size_t i) const { return OIIO::Strutil::stof(values.at(i)); }
 
 const ImageBuf& Call::guide(Role role) const { return guides.images.at(role); }
 
-const ImageBuf* Call::optional_guide(Role role) const
-{
-    const auto found = guides.images.find(role);
-    return found == guides.images.end() ? nullptr : &found->second;
-}
+const ImageBuf* Call::optional_guide(Role role) const { return present(guides, role); }
 
 namespace {
 
@@ -49,18 +56,38 @@ const std::vector<Role> feature_and_variance_roles = { Role::id, Role::normal, R
 const std::vector<Role> denoise_roles = { Role::normal, Role::depth,  Role::albedo,
                                           Role::variance, Role::half_a, Role::half_b };
 
-/// The present guides of `call` in the library's form.
-mcdenoise::Guides feature_guides(const Call& call)
+/// The present guides of `images` in the library's form.
+mcdenoise::Guides library_guides(const Guides& images)
 {
     mcdenoise::Guides guides;
-    guides.object_id = call.optional_guide(Role::id);
-    guides.normal    = call.optional_guide(Role::normal);
-    guides.depth     = call.optional_guide(Role::depth);
-    guides.albedo    = call.optional_guide(Role::albedo);
-    guides.variance  = call.optional_guide(Role::variance);
-    guides.half_a    = call.optional_guide(Role::half_a);
-    guides.half_b    = call.optional_guide(Role::half_b);
+    guides.object_id = present(images, Role::id);
+    guides.normal    = present(images, Role::normal);
+    guides.depth     = present(images, Role::depth);
+    guides.albedo    = present(images, Role::albedo);
+    guides.variance  = present(images, Role::variance);
+    guides.half_a    = present(images, Role::half_a);
+    guides.half_b    = present(images, Role::half_b);
+    guides.motion    = present(images, Role::motion);
     return guides;
+}
+
+/// The present guides of `call` in the library's form.
+mcdenoise::Guides feature_guides(const Call& call) { return library_guides(call.guides); }
+
+/// --denoise: the cross-frame form when the call has neighbours (with no
+/// neighbour on disk it equals the single-frame form, bit for bit).
+bool denoise_call(const Call& c)
+{
+    if (!c.neighbours)
+        return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);
+    std::vector<mcdenoise::FrameInput> neighbours;
+    std::vector<int> offsets;
+    for (const Neighbour& n : *c.neighbours) {
+        neighbours.push_back({ n.beauty, library_guides(*n.guides) });
+        offsets.push_back(n.offset);
+    }
+    return mcdenoise::denoise(c.dst, mcdenoise::FrameInput{ &c.beauty, feature_guides(c) }, neighbours, offsets, {},
+                              c.nthreads);
 }
 
 }  // namespace
@@ -188,8 +215,7 @@ const std::vector<Command>& command_table()
           "The one-call denoiser: clamps fireflies, then non-local means with the variance (from the "
           "variance guide, the halves, or estimated) and the feature weight of every guide present.",
           "mcdtool render.exr --denoise -o clean.exr",
-          [](const Call& c) { return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads); },
-          denoise_roles },
+          denoise_call, denoise_roles },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
           format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
                  "{0}x{0} neighbours (of the same object when an id guide is present).",

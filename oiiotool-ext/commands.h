@@ -39,6 +39,14 @@ struct Guides {
     std::map<Role, std::string> sources;  ///< "render.exr: N.X,N.Y,N.Z"
 };
 
+/// A neighbouring frame of the one being run (with --temporal): its beauty
+/// as read and its guides.
+struct Neighbour {
+    int offset;  ///< frame number minus the centre's
+    const ImageBuf* beauty;
+    const Guides* guides;
+};
+
 /// What a command's library call receives.
 struct Call {
     ImageBuf& dst;
@@ -46,6 +54,9 @@ struct Call {
     const Guides& guides;
     const std::vector<std::string>& values;  ///< validated against the Params
     int nthreads;
+    /// With --temporal, the neighbouring frames found on disk (maybe none):
+    /// --denoise then makes the cross-frame call; nullptr otherwise.
+    const std::vector<Neighbour>* neighbours = nullptr;
 
     /// Parameter `i` as an int (validated at parse time).
     int integer(size_t i) const;

@@ -35,7 +35,31 @@ std::string metrics_text(const mcdenoise::ImageComparison& m)
     return text;
 }
 
+/// "mean relMSE 0.0123  temporal error 0.456  flicker 0.0078" (or why not).
+std::string sequence_text(const mcdenoise::SequenceComparison& s)
+{
+    if (!s.ok)
+        return "no sequence figures: " + one_line(s.error);
+    return format("mean relMSE {:.6g}  temporal error {:.6g}  flicker {:.6g}", s.mean_rel_mse, s.temporal_error,
+                  s.flicker);
+}
+
 }  // namespace
+
+void SequenceCompare::add(const ImageBuf& before, const ImageBuf& after, const ImageBuf& reference)
+{
+    mcdenoise::add_sequence_frame(input_, before, reference);
+    mcdenoise::add_sequence_frame(result_, after, reference);
+}
+
+void SequenceCompare::print() const
+{
+    const mcdenoise::SequenceComparison input = mcdenoise::sequence_comparison(input_);
+    const mcdenoise::SequenceComparison result = mcdenoise::sequence_comparison(result_);
+    std::printf("mcdtool: compare sequence, %d frames in run order (flicker is meaningful for a static shot)\n"
+                "  input   %s\n  result  %s\n", result.frames, sequence_text(input).c_str(),
+                sequence_text(result).c_str());
+}
 
 ImageBuf reference_beauty(const std::string& path, std::string_view beauty_channels, ImageFiles& files,
                           size_t input_beauty_channels)

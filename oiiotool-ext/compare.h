@@ -1,9 +1,12 @@
 // compare.h: --compare REF, the result judged against a reference render
 // with the library's metrics (relMSE, MSE, PSNR, SSIM), printed for the
-// input and for the result so the gain is visible.
+// input and for the result so the gain is visible; over a sequence, also
+// the sequence figures (mean relMSE, temporal error, flicker) at the end.
 #pragma once
 
 #include "input.h"
+
+#include <mcdenoise/sequence_metrics.h>
 
 #include <OpenImageIO/imagebuf.h>
 
@@ -24,5 +27,23 @@ ImageBuf reference_beauty(const std::string& path, std::string_view beauty_chann
 /// "--compare : <library message>".
 void print_comparison(const std::string& path, const ImageBuf& before, const ImageBuf& after,
                       const ImageBuf& reference, int nthreads);
+
+/// --compare over a sequence: the running figures of the input and of the
+/// result against the references, frame by frame in run order.
+class SequenceCompare {
+public:
+    explicit SequenceCompare(int nthreads)
+        : input_(mcdenoise::start_sequence({}, nthreads)), result_(mcdenoise::start_sequence({}, nthreads))
+    {
+    }
+    /// Adds the next frame compared (its input, result and reference beauty).
+    void add(const ImageBuf& before, const ImageBuf& after, const ImageBuf& reference);
+    /// Prints the sequence figures on stdout (or why there are none).
+    void print() const;
+
+private:
+    mcdenoise::SequenceSums input_;
+    mcdenoise::SequenceSums result_;
+};
 
 }  // namespace mcdtool

@@ -33,13 +33,19 @@ int run(const Options& options)
     RunStats stats;
     Progress progress(frames.size());
     stats.show_progress_in(&progress);
+    FrameWindow window(options, stats);
+    const bool sequence = !options.frames.empty();
+    std::optional<SequenceCompare> compare;
+    if (sequence && !options.compare.empty())
+        compare.emplace(options.threads);
+    const SequenceRun shared{ &window, compare ? &*compare : nullptr };
     size_t done = 0;
     for (const std::optional<int>& frame : frames) {
         std::string where = frame ? "frame " + std::to_string(*frame) + ": " : "";
         FrameOutcome outcome = FrameOutcome::failed;
         progress.begin_frame(done + 1, frame.value_or(0));
         try {
-            outcome = run_frame(options, frame, stats);
+            outcome = run_frame(options, frame, stats, shared);
             if (outcome == FrameOutcome::skipped && options.verbose) {
                 progress.clear();
                 std::printf("mcdtool: %sskipped, outputs exist\n", where.c_str());
@@ -56,9 +62,11 @@ int run(const Options& options)
     }
     progress.finish();
     stats.show_progress_in(nullptr);
+    if (compare)
+        compare->print();
     if (options.runstats)
         std::printf("%s", stats.report().c_str());
-    if (!options.frames.empty())  // on and off a terminal: farm logs are files
+    if (sequence)  // on and off a terminal: farm logs are files
         std::fprintf(stderr, "mcdtool: %s\n", stats.frame_summary().c_str());
     return stats.frames(FrameOutcome::failed) ? exit_run_error : exit_ok;
 }

@@ -5,10 +5,10 @@
 #include "channels.h"
 #include "compare.h"
 #include "error.h"
+#include "frame_inputs.h"
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
-#include "memory_limit.h"
 #include "output.h"
 #include "preview.h"
 
@@ -89,26 +89,25 @@ void report_channels(const std::string& input_path, const ImageBuf& input, const
     }
 }
 
-/// Float bytes a frame holds at its peak: the input and its output copy,
-/// the beauty before, current and being written, and the guides.
-uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides)
+/// With -v and --temporal: the neighbouring frames --denoise takes.
+void report_neighbours(int frame, const std::vector<Neighbour>& neighbours)
 {
-    constexpr uint64_t beauty_buffers = 3;
-    uint64_t channels = 2 * uint64_t(input.nchannels()) + beauty_buffers * found.beauty.size();
-    for (const auto& [role, guide] : guides.images)
-        channels += uint64_t(guide.nchannels());
-    return float_bytes(input.spec().image_pixels(), channels);
+    std::vector<std::string> frames;
+    for (const Neighbour& n : neighbours)
+        frames.push_back(std::to_string(frame + n.offset));
+    std::printf("mcdtool: --temporal : frame %d with frames %s\n", frame,
+                frames.empty() ? "(none on disk)" : OIIO::Strutil::join(frames, ", ").c_str());
 }
 
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed.
 ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, int nthreads, bool verbose,
-                     RunStats& stats)
+                     RunStats& stats, const std::vector<Neighbour>* neighbours)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, nthreads };
+    Call call{ dst, current, guides, step.values, nthreads, neighbours };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
@@ -126,39 +125,68 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     return dst;
 }
 
+/// The inputs of one frame, and with --temporal its neighbours on disk.
+struct LoadedFrame {
+    std::unique_ptr<FrameWindow> own_window;  ///< a window for this frame alone (no shared one)
+    std::unique_ptr<FrameInputs> own_inputs;  ///< the inputs, when not held by a window
+    const FrameInputs* inputs = nullptr;
+    std::vector<Neighbour> neighbours;
+};
+
+/// Reads `frame`, from `window` with --temporal (a window of its own if
+/// `window` is nullptr).
+LoadedFrame load_frame(const Options& options, std::optional<int> frame, RunStats& stats, FrameWindow* window)
+{
+    LoadedFrame loaded;
+    if (options.temporal == 0 || !frame) {
+        loaded.own_inputs = read_frame_inputs(options, frame, stats);
+        loaded.inputs = loaded.own_inputs.get();
+        return loaded;
+    }
+    if (!window) {
+        loaded.own_window = std::make_unique<FrameWindow>(options, stats);
+        window = loaded.own_window.get();
+    }
+    loaded.inputs = &window->centre(*frame);
+    loaded.neighbours = window->neighbours(*frame);
+    return loaded;
+}
+
 }  // namespace
 
-FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStats& stats)
+FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStats& stats, const SequenceRun& run)
 {
-    PathForFrame path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
+    PathForFrame path_of = [&](const std::string& path) { return path_for_frame(path, frame); };
     if (options.skip_existing && all_outputs_exist(options, path_of))
         return FrameOutcome::skipped;
     prepare_outputs(options, path_of);
 
-    std::string input_path = path_of(options.input);
-    const uint64_t memory_limit = memory_limit_bytes(options.memory_limit_mb);
-    ImageFiles files(stats, memory_limit);
-    const ImageBuf& input = files.get(input_path, "input");
-    warn_if_display_referred(input, "input");
-    Discovery found = discover_channels(input.spec(), options.beauty_channels, input_path);
-    Guides guides = load_guides(input, input_path, found, options, path_of, files);
-    require_memory(frame_bytes(input, found, guides), memory_limit, input_path,
-                   "this frame (input, output copy, 3 beauty buffers and the guides, as float)");
+    const LoadedFrame loaded = load_frame(options, frame, stats, run.window);
+    const FrameInputs& inputs = *loaded.inputs;
+    const ImageBuf& input = *inputs.input;
+    const std::string& input_path = inputs.path;
+    const Discovery& found = inputs.found;
+    const Guides& guides = inputs.guides;
     if (options.verbose)
         report_channels(input_path, input, found, guides);
+    if (options.verbose && options.temporal > 0 && frame)
+        report_neighbours(*frame, loaded.neighbours);
     for (const Step& step : options.steps)  // before any work: fail fast on a missing guide
         if (step.command)
             require_guides(*step.command, guides, input_path, input.spec(), found);
     ImageBuf reference;  // before any work: a missing reference must not cost the result
     if (!options.compare.empty())
-        reference = reference_beauty(path_of(options.compare), options.beauty_channels, files, found.beauty.size());
+        reference = reference_beauty(path_of(options.compare), options.beauty_channels, *inputs.files,
+                                     found.beauty.size());
 
-    ImageBuf before = extract_channels(input, found.beauty);
+    const ImageBuf& before = inputs.beauty;
     ImageBuf current = before;
     OutputBatch batch(stats);
     for (const Step& step : options.steps) {
         if (step.command) {
-            current = run_command(step, current, guides, options.threads, options.verbose, stats);
+            const bool across_frames = options.temporal > 0 && frame && std::string(step.command->name) == "denoise";
+            current = run_command(step, current, guides, options.threads, options.verbose, stats,
+                                  across_frames ? &loaded.neighbours : nullptr);
             continue;
         }
         std::string path = path_of(step.output);
@@ -181,6 +209,8 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
             std::printf("mcdtool: --preview %s\n", path_of(options.preview).c_str());
     }
     batch.commit();
+    if (run.compare)
+        run.compare->add(before, current, reference);
     return FrameOutcome::written;
 }
 

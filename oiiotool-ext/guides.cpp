@@ -62,11 +62,14 @@ std::string guide_source(const std::string& path, const ImageSpec& spec, Role ro
                   cryptomatte_guide(spec, role, indices) ? " (Cryptomatte ids)" : "");
 }
 
-/// The guide roles the commands of `steps` need or use when present.
-std::set<Role> roles_used(const std::vector<Step>& steps)
+/// The guide roles the commands of `options` need or use when present (the
+/// motion guide only across frames, with --temporal).
+std::set<Role> roles_used(const Options& options)
 {
     std::set<Role> used;
-    for (const Step& step : steps)
+    if (options.temporal > 0)
+        used.insert(Role::motion);
+    for (const Step& step : options.steps)
         if (step.command) {
             used.insert(step.command->roles.begin(), step.command->roles.end());
             used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
@@ -122,7 +125,7 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
 {
     Guides guides;
     int beauty_channels = int(found.beauty.size());
-    const std::set<Role> used = roles_used(options.steps);
+    const std::set<Role> used = roles_used(options);
     for (const auto& [role, indices] : found.roles) {
         if (used.count(role))
             guides.images[role] = guide_image(input, role, indices);

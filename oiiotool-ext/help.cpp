@@ -108,11 +108,52 @@ std::string pass_names_text(const RoleInfo& info)
     return OIIO::Strutil::join(names, ", ");
 }
 
+/// The motion role's convention, as established on Blender 3.4 renders
+/// (tests/blender/test_vector_pass.py), and the other renderers' passes.
+constexpr const char* motion_guide_text =
+    "\n### The motion guide\n\n"
+    "`motion` is Blender Cycles' `Vector` pass, 4 channels in pixels with y pointing up the image: a "
+    "pixel at film position (x, y) was at (x + X, y + Y) in the previous frame and is at (x - Z, y - W) in "
+    "the next (in rows counted from the top: (x + X, row - Y) and (x - Z, row + W)). So a point moving 4 "
+    "pixels right and 2 up per frame has X = -4, Y = -2, Z = -4, W = -2: Cycles computes "
+    "X,Y = previous - current and Z,W = current - next, in its raster space (y up), on the first hit's "
+    "position. Checked on a real Cycles render by `tests/blender/test_vector_pass.py` (an orthographic "
+    "shot of a cube moving by a known number of pixels; scene script `tests/blender/vector_pass_scene.py`). "
+    "Cycles writes `Vector` only with motion blur off. testrender writes the same convention as "
+    "`motion.X,Y,Z,W`. Only `--temporal` uses the guide; without it, each neighbour is matched by the "
+    "patch search alone. Other renderers' motion passes are recognised and not used, with a warning "
+    "saying why: Arnold's `motionvector` AOV is one 2D vector over the shutter interval (not to each "
+    "neighbouring frame), and RenderMan's denoise channels `forward` (`motionFore`) and `backward` "
+    "(`motionBack`) have no documented film scale and orientation; convert them to the convention above "
+    "and give them with `--aov motion=FILE:X,Y,Z,W`.\n";
+
+/// What --temporal does with a sequence, and --compare over one.
+constexpr const char* temporal_text =
+    "\n### Across frames: `--temporal N`\n\n"
+    "With `--temporal N`, `--denoise` (which must then be the first command) denoises each frame with the "
+    "frames up to N before and after it: the cross-frame `mcdenoise::denoise` of temporal.h, each neighbour "
+    "carried by the `motion` guide when the files have one. The neighbours are the input files on disk within "
+    "N frame numbers, also outside `--frames`, so a shot split across runs, farm tasks or the Python batch's "
+    "chunks gives the same files as one run. Each file is read once: the frames are held in a window of up to "
+    "2N+1 frames while the frames run in order (the memory of 2N+1 frames' inputs and guides; `--memory-limit` "
+    "checks one frame). A neighbour missing on disk is warned about (`mcdtool WARNING: frame 1: --temporal : "
+    "neighbour frame 0 (shot.0000.exr) does not exist: left out`; expected at the ends of a shot) and left out, "
+    "so the frame is denoised with the neighbours that exist. A neighbour whose display or data window, beauty "
+    "channel count or set of guides differs from the frame's fails that frame with an error naming both. "
+    "`--temporal 0` is plain `--denoise`, byte for byte; N is at most 8.\n\n"
+    "With `--compare REF` over a sequence (`--compare 'ref.####.exr'`), each frame's metrics are printed as it "
+    "is done and, at the end, the figures of the whole run (frames in run order), for the input and the "
+    "result: the mean of the per-frame relMSE, the temporal error (the relMSE of the frame-to-frame "
+    "differences against the references' differences) and the flicker (the variance of each value across the "
+    "frames over the squared mean reference + 0.01; meaningful for a static shot), as "
+    "`mcdenoise::compare_sequence` (sequence_metrics.h) defines them.\n";
+
 /// The fixed examples that are about options rather than one command.
 std::vector<std::string> option_examples()
 {
     return { "mcdtool 'shot/beauty.####.exr' --frames 1-48 --median 7 -o 'clean/beauty.####.exr'",
              "mcdtool render.exr --median 7 --compare reference.exr",
+             "mcdtool 'shot/beauty.####.exr' --frames 1-48 --denoise --temporal 2 -o 'clean/beauty.####.exr'",
              "mcdtool render.exr --median 7 -o clean.exr --preview before_after.png",
              "mcdtool beauty.exr --aov id=ids.exr --aov normal=render.exr:N -v --median 3 -o out.exr",
              "mcdtool render.exr --median 7 -d half --compression dwaa -o clean.exr --runstats" };
@@ -201,6 +242,7 @@ std::string help_markdown()
     for (const RoleInfo& info : role_table())
         md += format("| `{}` | `{}` | {} | {} | {} |\n", info.name, info.argument, channel_count_text(info),
                      cell(info.what), pass_names_text(info));
+    md += motion_guide_text;
 
     md += "\n## Options\n";
     for (const std::string& group : option_groups) {
@@ -218,6 +260,7 @@ std::string help_markdown()
           "is drawn on stderr when it is a terminal. A frame that fails is reported with its number and "
           "the others are still written; the exit status is then 1. A sequence ends with a summary on "
           "stderr, terminal or not: `mcdtool: 48 frames: 40 written, 0 skipped, 8 failed`.\n";
+    md += temporal_text;
     md += "\n## Examples\n\n```\n";
     for (const Command& command : command_table())
         md += std::string(command.example) + "\n";

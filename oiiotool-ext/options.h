@@ -12,6 +12,10 @@
 
 namespace mcdtool {
 
+/// Most frames --temporal takes on each side of a frame (2N+1 frames are
+/// held in memory; Cycles' animation denoiser took at most 7).
+constexpr int max_temporal_radius = 8;
+
 /// One thing done, left to right, to the current image: a command or -o.
 struct Step {
     const Command* command = nullptr;  ///< nullptr for an output (-o)
@@ -38,6 +42,7 @@ struct Options {
     std::vector<AovRequest> aovs;
     std::string beauty_channels;     ///< --beauty (empty: discover)
     std::string frames;              ///< --frames (empty: a single image)
+    int temporal = 0;                ///< --temporal: frames before and after each frame --denoise uses
     std::string data_format;         ///< -d (empty: the input's)
     std::string compression;         ///< --compression (empty: the input's)
     std::string compare;             ///< --compare REF

@@ -5,6 +5,7 @@
 #include "channels.h"
 #include "commands.h"
 #include "error.h"
+#include "foreign_motion.h"
 #include "frames.h"
 #include "preview.h"
 #include "roles.h"
@@ -12,6 +13,9 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
+
+#include <algorithm>
+#include <cstdio>
 
 namespace mcdtool {
 
@@ -84,6 +88,45 @@ void check_parameters(const Options& options)
     }
 }
 
+/// Throws unless --temporal N > 0 comes with what it works on: a sequence
+/// (--frames) and a --denoise step.
+void check_temporal(const Options& options)
+{
+    if (options.temporal == 0)
+        return;
+    if (options.frames.empty())
+        throw UsageError(format("--temporal {} : needs a frame sequence (a pattern input with --frames)",
+                                options.temporal));
+    auto first = std::find_if(options.steps.begin(), options.steps.end(), [](const Step& step) {
+        return step.command != nullptr;
+    });
+    if (first == options.steps.end() || std::string(first->command->name) != "denoise")
+        throw UsageError(format("--temporal {} : only --denoise works across frames, and it must be the first "
+                                "command (the neighbouring frames enter it as read)", options.temporal));
+}
+
+/// With --temporal, warns once when `frame`'s input has no motion guide but
+/// another renderer's motion pass that mcdtool does not convert.
+void warn_foreign_motion(const Options& options, std::optional<int> frame)
+{
+    const bool given = std::any_of(options.aovs.begin(), options.aovs.end(),
+                                   [](const AovRequest& aov) { return aov.role == Role::motion; });
+    if (options.temporal == 0 || given)
+        return;
+    const std::string path = frame ? frame_path(options.input, *frame) : options.input;
+    auto spec = header(path);
+    if (!spec)
+        return;
+    Discovery found = discover_channels(*spec, options.beauty_channels, path);
+    std::string foreign = found.roles.count(Role::motion) ? "" : foreign_motion_pass(*spec, found.layer);
+    if (!foreign.empty())
+        std::fprintf(stderr,
+                     "mcdtool WARNING: --temporal : %s is not used as the motion guide: %s; the neighbours are "
+                     "matched by the patch search alone (give --aov motion=FILE:CHANNELS in Cycles' Vector "
+                     "convention, docs/mcdtool.md)\n",
+                     path.c_str(), foreign.c_str());
+}
+
 }  // namespace
 
 std::vector<std::optional<int>> frames_to_run(const Options& options)
@@ -104,8 +147,11 @@ void check_arguments(const Options& options)
         if (!options.preview.empty() || !options.display.empty() || !options.view.empty()
             || !options.ocio_config.empty())
             check_display(options);
-        if (auto frame = first_readable_frame(options))
+        check_temporal(options);
+        if (auto frame = first_readable_frame(options)) {
             check_selectors(options, *frame);
+            warn_foreign_motion(options, *frame);
+        }
     } catch (const RunError& error) {
         throw UsageError(error.what());
     }

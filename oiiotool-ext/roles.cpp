@@ -11,7 +11,10 @@ const std::vector<RoleInfo>& role_table()
     // EXR pass names: IndexOB, Normal, Depth and the Denoising passes), then those of RenderMan's denoise AOVs (zfiltered; mse,
     // the variance of the pixel's mean) and Arnold's (denoise_albedo, and
     // diffuse_albedo before Arnold 6); matching ignores case and looks only
-    // in the beauty's view layer.
+    // in the beauty's view layer. Motion is Cycles' Vector pass convention
+    // (docs/temporal.md): X,Y the film offset to the pixel's position in the
+    // previous frame, Z,W the offset from its position in the next frame,
+    // in pixels, y up; testrender writes the same as motion.X,Y,Z,W.
     static const std::vector<RoleInfo> table = {
         { Role::id, "id", "object_id", 1, 1, false, "object id of the first hit",
           { "id", "IndexOB", "object_id", "objectid" } },
@@ -32,6 +35,9 @@ const std::vector<RoleInfo>& role_table()
           "half-sample estimate of the beauty (first half)", { "A", "half_a" } },
         { Role::half_b, "half_b", "half_b", 0, 0, true,
           "half-sample estimate of the beauty (second half)", { "B", "half_b" } },
+        { Role::motion, "motion", "motion", 4, 4, false,
+          "screen-space motion in pixels, y up: X,Y to the previous frame, Z,W from the next (Cycles' Vector pass)",
+          { "motion", "Vector" } },
     };
     return table;
 }

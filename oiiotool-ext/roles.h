@@ -9,7 +9,7 @@
 namespace mcdtool {
 
 /// A guide image a command may need beside the beauty.
-enum class Role { id, reflid, normal, depth, albedo, variance, half_a, half_b };
+enum class Role { id, reflid, normal, depth, albedo, variance, half_a, half_b, motion };
 
 /// Everything the driver knows about one role.
 struct RoleInfo {

@@ -71,7 +71,7 @@ std::string RunStats::report() const
                           + frames(FrameOutcome::skipped) + frames(FrameOutcome::failed),
                           frames(FrameOutcome::written), frames(FrameOutcome::skipped), frames(FrameOutcome::failed)));
     row("total time", format("{:.3f} s", total_.seconds()));
-    row("read time", format("{:.3f} s", read_seconds_));
+    row("read time", format("{:.3f} s ({} files)", read_seconds_, files_read_));
     row("write time", format("{:.3f} s", write_seconds_));
     for (const Entry& entry : commands_)
         row(entry.command, entry.calls == 1

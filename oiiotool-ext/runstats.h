@@ -37,8 +37,12 @@ class RunStats {
 public:
     /// Adds one call of `command` that took `seconds`.
     void add_command(const std::string& command, double seconds);
-    /// Adds reading time.
-    void add_read(double seconds) { read_seconds_ += seconds; }
+    /// Adds reading time, of one file read.
+    void add_read(double seconds)
+    {
+        read_seconds_ += seconds;
+        ++files_read_;
+    }
     /// Adds writing time (outputs and previews).
     void add_write(double seconds) { write_seconds_ += seconds; }
     /// Counts one frame done with `outcome`.
@@ -63,6 +67,7 @@ private:
     };
     std::vector<Entry> commands_;  ///< in order of first use
     double read_seconds_ = 0.0;
+    int files_read_ = 0;  ///< image files read (each --temporal neighbour once)
     double write_seconds_ = 0.0;
     int counts_[3] = { 0, 0, 0 };  ///< by FrameOutcome
     Progress* progress_ = nullptr;

@@ -96,6 +96,7 @@ def run_frames(args, frames, retries=DEFAULT_RETRIES):
     FrameResult per frame; never raises for a frame's failure. This is the
     task a pool process or a Dask worker runs."""
     where = f"{os.uname().nodename}:{os.getpid()}"
+    runner = _mcdenoise._FrameRunner(args)  # with --temporal, holds the frames read for the next ones
     results = []
     for frame in frames:
         start = time.perf_counter()
@@ -103,7 +104,7 @@ def run_frames(args, frames, retries=DEFAULT_RETRIES):
         while True:
             attempts += 1
             try:
-                status = _mcdenoise._run_frame(args, frame)
+                status = runner.run(frame)
                 results.append(FrameResult(frame, status, attempts, time.perf_counter() - start, "", where))
                 break
             except (_mcdenoise.Error, OSError, MemoryError) as error:
@@ -115,7 +116,7 @@ def run_frames(args, frames, retries=DEFAULT_RETRIES):
 
 
 def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_existing=False, force=False,
-                  threads=0):
+                  threads=0, temporal=0):
     """The mcdtool command line (without the program name) that
     `denoise_sequence` runs: `chain` and `options` are mcdtool words, as one
     string or a list of strings (each split like a shell would); `frames` is
@@ -129,11 +130,13 @@ def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_exist
         args.append("--force")
     if threads:
         args += ["--threads", str(threads)]
+    if temporal:
+        args += ["--temporal", str(temporal)]
     return args
 
 
 def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip_existing=False, force=False,
-                     threads=0, client=None, scheduler=None, workers=None, retries=DEFAULT_RETRIES,
+                     threads=0, temporal=0, client=None, scheduler=None, workers=None, retries=DEFAULT_RETRIES,
                      chunk_size=1, progress=True):
     """Denoises every frame of `pattern` with `chain` into `output_pattern`.
 
@@ -141,7 +144,9 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     options such as "--aov normal=n.####.exr -d half"); `frames` is an mcdtool
     frame list or a sequence of integers. `skip_existing` and `force` are
     mcdtool's --skip-existing and --force; `threads` the library threads per
-    frame (0: all cores).
+    frame (0: all cores); `temporal` is mcdtool's --temporal N (--denoise
+    with the N frames before and after each frame, read from disk, so every
+    task reads the frames its chunk needs and the files equal mcdtool's).
 
     Runs on `client` (a dask.distributed.Client), else on the Dask scheduler
     at `scheduler` ("tcp://HOST:PORT"), else on a local process pool of
@@ -151,7 +156,8 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     `progress`, a line per frame goes to stderr. Returns a BatchSummary;
     raises UsageError (before any work) for a malformed chain or pattern.
     """
-    args = sequence_args(pattern, frames, chain, output_pattern, options, skip_existing, force, threads)
+    args = sequence_args(pattern, frames, chain, output_pattern, options, skip_existing, force, threads,
+                         temporal)
     return run_batch(args, client=client, scheduler=scheduler, workers=workers, retries=retries,
                      chunk_size=chunk_size, progress=progress)
 

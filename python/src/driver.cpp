@@ -36,6 +36,29 @@ std::string run_frame(const std::vector<std::string>& args, std::optional<int> f
     return mcdtool::run_frame(options, frame, stats) == mcdtool::FrameOutcome::written ? "written" : "skipped";
 }
 
+/// Runs the frames of one batch task in order, sharing what mcdtool's own
+/// run shares between frames: with --temporal, the window of frames read
+/// (each file of the task's frames and their neighbours read once).
+class FrameRunner {
+public:
+    explicit FrameRunner(const std::vector<std::string>& args) : options_(parse_for_run(args)), window_(options_, stats_)
+    {
+    }
+    /// Runs one frame as `_run_frame` does.
+    std::string run(std::optional<int> frame)
+    {
+        py::gil_scoped_release release;
+        const mcdtool::SequenceRun shared{ &window_, nullptr };
+        return mcdtool::run_frame(options_, frame, stats_, shared) == mcdtool::FrameOutcome::written ? "written"
+                                                                                                     : "skipped";
+    }
+
+private:
+    mcdtool::Options options_;
+    mcdtool::RunStats stats_;
+    mcdtool::FrameWindow window_;
+};
+
 /// The input, --frames and every output pattern of a command line, after
 /// mcdtool's checks of every argument value (preflight.h).
 py::dict describe_command_line(const std::vector<std::string>& args)
@@ -62,6 +85,12 @@ void bind_driver(py::module_& m)
           "frame, as `mcdtool ARGS` does for that frame: returns 'written' or\n"
           "'skipped' (--skip-existing); raises UsageError or Error with mcdtool's\n"
           "message, in which case nothing of the frame was written.");
+    py::class_<FrameRunner>(m, "_FrameRunner",
+                            "mcdtool's command line `args` (without the program name), run frame by\n"
+                            "frame in order: run(frame) does what _run_frame does, and with --temporal\n"
+                            "keeps the frames read for the next frames (each file read once).")
+        .def(py::init<const std::vector<std::string>&>(), py::arg("args"))
+        .def("run", &FrameRunner::run, py::arg("frame") = std::nullopt);
     m.def("_describe_command_line", &describe_command_line, py::arg("args"),
           "Parses and checks mcdtool's command line `args` as mcdtool does before\n"
           "reading any frame: a dict with its 'input', 'frames' (as typed) and\n"

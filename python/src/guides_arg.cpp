@@ -11,7 +11,7 @@ const std::map<std::string, const ImageBuf* mcdenoise::Guides::*>& guide_fields(
     static const std::map<std::string, const ImageBuf* G::*> fields = {
         { "object_id", &G::object_id }, { "normal", &G::normal },     { "depth", &G::depth },
         { "albedo", &G::albedo },       { "variance", &G::variance }, { "half_a", &G::half_a },
-        { "half_b", &G::half_b },
+        { "half_b", &G::half_b },       { "motion", &G::motion },
     };
     return fields;
 }

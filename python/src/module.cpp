@@ -5,6 +5,7 @@
 #include "driver.h"
 #include "operation.h"
 #include "operations.h"
+#include "sequence_metrics.h"
 
 #include "oiiotool-ext/error.h"
 
@@ -95,6 +96,7 @@ PYBIND11_MODULE(_mcdenoise, m)
     mcdpy::bind_comparison(m);
     mcdpy::bind_feature_sigmas(m);
     mcdpy::bind_operations(m);
+    mcdpy::bind_sequence_metrics(m);
     mcdpy::bind_defaults(m);
     mcdpy::bind_driver(m);
 }

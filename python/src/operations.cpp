@@ -5,6 +5,7 @@
 // are bound first, in module.cpp.
 #include "operations.h"
 
+#include "denoise_binding.h"
 #include "operation.h"
 
 #include <mcdenoise/mcdenoise.h>
@@ -54,7 +55,7 @@ void bind_operations(py::module_& m)
                   arg("strength") = mcd::default_nlmeans_strength, arg("sigmas") = mcd::FeatureSigmas());
     def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"),
                   arg("factor") = mcd::default_firefly_factor, arg("radius") = mcd::default_firefly_radius);
-    def_operation(m, "denoise", mcd::denoise, arg("beauty"), arg("guides") = py::none());
+    bind_denoise(m);  // both forms: one frame, or with its neighbours (denoise_binding.cpp)
     def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"),
                   arg("epsilon") = mcd::default_demodulate_epsilon);
     def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"),

@@ -312,7 +312,7 @@ def test_testrender_file_discovery(tmp_path):
     for role, channels in [("beauty", "R,G,B"), ("id", "id"), ("reflid", "reflid"), ("normal", "N.X,N.Y,N.Z"),
                            ("depth", "Z"), ("albedo", "albedo.R,albedo.G,albedo.B"),
                            ("variance", "var.R,var.G,var.B"), ("half_a", "A.R,A.G,A.B"),
-                           ("half_b", "B.R,B.G,B.B")]:
+                           ("half_b", "B.R,B.G,B.B"), ("motion", "motion.X,motion.Y,motion.Z,motion.W")]:
         assert f"{role:<8} <- {tmp_path / 'tr.exr'}: {channels}\n" in r.out, r
 
 

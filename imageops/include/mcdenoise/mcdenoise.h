@@ -44,3 +44,4 @@
 #include <mcdenoise/simple.h>
 #include <mcdenoise/temporal.h>
 #include <mcdenoise/metrics.h>
+#include <mcdenoise/sequence_metrics.h>

@@ -1,0 +1,44 @@
+// frame_window.h: the frames a --temporal N run holds in memory: each
+// frame's inputs read once and kept while within N frames of the frame
+// being run (a sliding window of 2N+1 frames when the frames run in
+// order), and the neighbours of a frame as --denoise takes them.
+#pragma once
+
+#include "commands.h"
+#include "frame_inputs.h"
+#include "options.h"
+#include "runstats.h"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace mcdtool {
+
+/// The frames held by a --temporal run.
+class FrameWindow {
+public:
+    FrameWindow(const Options& options, RunStats& stats) : options_(options), stats_(stats) {}
+
+    /// The inputs of `frame`, read now unless held; drops the held frames
+    /// farther than N from it. Throws RunError naming the file.
+    const FrameInputs& centre(int frame);
+
+    /// The frames `frame` +- 1..N whose input file exists, read unless held
+    /// (`centre(frame)` first), each checked against the centre: the same
+    /// display and data window, beauty channel count and guides (a
+    /// neighbour may lack the motion guide), else
+    /// RunError naming both frames. A neighbour missing on disk is warned
+    /// about on stderr and left out.
+    std::vector<Neighbour> neighbours(int frame);
+
+private:
+    /// The inputs of `frame`, read now unless held.
+    const FrameInputs& get(int frame);
+
+    const Options& options_;
+    RunStats& stats_;
+    std::map<int, std::unique_ptr<FrameInputs>> held_;
+};
+
+}  // namespace mcdtool
