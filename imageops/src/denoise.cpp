@@ -5,6 +5,7 @@
 #include <mcdenoise/nlmeans.h>
 
 #include "feature_field.h"
+#include "layer_channels.h"
 #include "operation.h"
 #include "window.h"
 
@@ -116,6 +117,12 @@ std::string guide_names(const Guides& guides)
 
 bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
 {
+    return denoise_stacked(dst, beauty, beauty.nchannels(), guides, roi, nthreads);
+}
+
+bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+                     const Guides& guides, ROI roi, int nthreads)
+{
     Guides used    = guides;  // the object id is not read (see denoise.h)
     used.object_id = nullptr;
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, used, roi)
@@ -128,8 +135,8 @@ bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI ro
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
     ImageBuf clamped, variance;
-    if (!clamp_fireflies(clamped, beauty, used, firefly_factor, firefly_radius, region,
-                         nthreads)) {
+    if (!clamp_fireflies_layers(clamped, beauty, layer_begin, used, firefly_factor,
+                                firefly_radius, region, nthreads)) {
         dst.errorfmt("{}: {}", op_name, clamped.geterror());
         return false;
     }
