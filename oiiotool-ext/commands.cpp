@@ -63,6 +63,21 @@ mcdenoise::Guides feature_guides(const Call& call)
     return guides;
 }
 
+/// `denoise` of the beauty with the light passes of `call`, which are
+/// replaced by their denoised forms.
+bool denoise_layers(const Call& call)
+{
+    std::vector<const ImageBuf*> layers;
+    for (const ImageBuf& layer : *call.layers)
+        layers.push_back(&layer);
+    std::vector<ImageBuf> denoised;
+    if (!mcdenoise::denoise_layers(call.dst, denoised, call.beauty, layers, feature_guides(call), {},
+                                   call.nthreads))
+        return false;
+    *call.layers = std::move(denoised);
+    return true;
+}
+
 }  // namespace
 
 const std::vector<Command>& command_table()
@@ -188,8 +203,12 @@ const std::vector<Command>& command_table()
           "The one-call denoiser: clamps fireflies, then non-local means with the variance (from the "
           "variance guide, the halves, or estimated) and the feature weight of every guide present.",
           "mcdtool render.exr --denoise -o clean.exr",
-          [](const Call& c) { return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads); },
-          denoise_roles },
+          [](const Call& c) {
+              if (!c.layers || c.layers->empty())
+                  return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);
+              return denoise_layers(c);
+          },
+          denoise_roles, true },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
           format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
                  "{0}x{0} neighbours (of the same object when an id guide is present).",

@@ -46,6 +46,8 @@ struct Call {
     const Guides& guides;
     const std::vector<std::string>& values;  ///< validated against the Params
     int nthreads;
+    /// The light passes (--aovs) a command that takes them denoises in place.
+    std::vector<ImageBuf>* layers = nullptr;
 
     /// Parameter `i` as an int (validated at parse time).
     int integer(size_t i) const;
@@ -71,6 +73,7 @@ struct Command {
     const char* example;           ///< a full mcdtool command line
     CallFn call;
     std::vector<Role> optional_roles = {};  ///< guides it uses when present
+    bool takes_layers = false;     ///< denoises the --aovs light passes with the beauty
 };
 
 /// Every command, in help order.

@@ -8,6 +8,7 @@
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
+#include "light_passes.h"
 #include "memory_limit.h"
 #include "output.h"
 #include "preview.h"
@@ -89,6 +90,17 @@ void report_channels(const std::string& input_path, const ImageBuf& input, const
     }
 }
 
+/// With -v: the light passes --aovs denoises, and whether the beauty is rebuilt from them.
+void report_light_passes(const std::string& input_path, const LightLayers& layers)
+{
+    std::vector<std::string> names;
+    for (const LightPass& pass : layers.passes)
+        names.push_back(pass.name);
+    std::printf("mcdtool: %-8s <- %s: %s%s\n", "aovs", input_path.c_str(),
+                names.empty() ? "(none found)" : OIIO::Strutil::join(names, ",").c_str(),
+                layers.rebuild ? " (the beauty is rebuilt from them)" : "");
+}
+
 /// Float bytes a frame holds at its peak: the input and its output copy,
 /// the beauty before, current and being written, and the guides.
 uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides)
@@ -102,13 +114,13 @@ uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides
 
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed.
-ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, int nthreads, bool verbose,
-                     RunStats& stats)
+ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, LightLayers& layers,
+                     int nthreads, bool verbose, RunStats& stats)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, nthreads };
+    Call call{ dst, current, guides, step.values, nthreads, command.takes_layers ? &layers.images : nullptr };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
@@ -123,7 +135,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     if (verbose)
         std::printf("mcdtool: %s %s  %.3f s\n", name.c_str(), OIIO::Strutil::join(step.values, " ").c_str(),
                     seconds);
-    return dst;
+    return command.takes_layers && layers.rebuild ? rebuild_beauty(layers, dst) : dst;
 }
 
 }  // namespace
@@ -155,14 +167,21 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
 
     ImageBuf before = extract_channels(input, found.beauty);
     ImageBuf current = before;
+    LightLayers layers;
+    if (!options.light_passes.empty())
+        layers = load_light_layers(input, find_light_passes(input.spec(), options.light_passes, found, input_path),
+                                   before, input_path);
+    if (options.verbose && !options.light_passes.empty())
+        report_light_passes(input_path, layers);
     OutputBatch batch(stats);
     for (const Step& step : options.steps) {
         if (step.command) {
-            current = run_command(step, current, guides, options.threads, options.verbose, stats);
+            current = run_command(step, current, guides, layers, options.threads, options.verbose, stats);
             continue;
         }
         std::string path = path_of(step.output);
-        OutputImage output = compose_output(input, found.beauty, current, options, path);
+        OutputImage output = compose_output(input, written_channels(found.beauty, layers),
+                                            written_pixels(current, layers), options, path);
         batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (output.beauty_only && input.nchannels() > int(found.beauty.size()))
             std::fprintf(stderr,

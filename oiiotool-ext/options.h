@@ -37,6 +37,7 @@ struct Options {
     std::vector<Step> steps;
     std::vector<AovRequest> aovs;
     std::string beauty_channels;     ///< --beauty (empty: discover)
+    std::string light_passes;        ///< --aovs auto|LIST (empty: none)
     std::string frames;              ///< --frames (empty: a single image)
     std::string data_format;         ///< -d (empty: the input's)
     std::string compression;         ///< --compression (empty: the input's)

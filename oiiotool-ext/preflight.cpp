@@ -6,12 +6,15 @@
 #include "commands.h"
 #include "error.h"
 #include "frames.h"
+#include "light_passes.h"
 #include "preview.h"
 #include "roles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
+
+#include <algorithm>
 
 namespace mcdtool {
 
@@ -45,9 +48,12 @@ std::optional<std::optional<int>> first_readable_frame(const Options& options)
 void check_selectors(const Options& options, std::optional<int> frame)
 {
     auto path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
-    if (!options.beauty_channels.empty())
-        if (auto spec = header(path_of(options.input)))
-            discover_channels(*spec, options.beauty_channels, path_of(options.input));
+    if (!options.beauty_channels.empty() || !options.light_passes.empty())
+        if (auto spec = header(path_of(options.input))) {
+            const Discovery found = discover_channels(*spec, options.beauty_channels, path_of(options.input));
+            if (!options.light_passes.empty())
+                find_light_passes(*spec, options.light_passes, found, path_of(options.input));
+        }
     for (const AovRequest& aov : options.aovs)
         if (!aov.channels.empty())
             if (auto spec = header(path_of(aov.file)))
@@ -97,9 +103,24 @@ std::vector<std::optional<int>> frames_to_run(const Options& options)
     return frames;
 }
 
+namespace {
+
+/// --aovs needs a command that denoises the light passes.
+void check_light_passes(const Options& options)
+{
+    if (options.light_passes.empty()
+        || std::any_of(options.steps.begin(), options.steps.end(),
+                       [](const Step& s) { return s.command && s.command->takes_layers; }))
+        return;
+    throw UsageError("--aovs : needs --denoise, which denoises the light passes with the beauty");
+}
+
+}  // namespace
+
 void check_arguments(const Options& options)
 {
     check_parameters(options);
+    check_light_passes(options);
     try {
         if (!options.preview.empty() || !options.display.empty() || !options.view.empty()
             || !options.ocio_config.empty())
