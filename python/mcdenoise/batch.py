@@ -115,11 +115,13 @@ def run_frames(args, frames, retries=DEFAULT_RETRIES):
 
 
 def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_existing=False, force=False,
-                  threads=0):
+                  threads=0, aovs=None):
     """The mcdtool command line (without the program name) that
     `denoise_sequence` runs: `chain` and `options` are mcdtool words, as one
     string or a list of strings (each split like a shell would); `frames` is
-    an mcdtool frame list ("1-48", "1-10x2", "1,3,5") or integers."""
+    an mcdtool frame list ("1-48", "1-10x2", "1,3,5") or integers; `aovs`
+    is mcdtool's --aovs ("auto" or a list of pass names, as a string or a
+    list of strings)."""
     args = [str(pattern)] + _words(chain) + _words(options) + ["-o", str(output_pattern)]
     frames_text = frames if isinstance(frames, str) else ",".join(str(int(f)) for f in frames)
     args += ["--frames", frames_text]
@@ -129,11 +131,13 @@ def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_exist
         args.append("--force")
     if threads:
         args += ["--threads", str(threads)]
+    if aovs:
+        args += ["--aovs", aovs if isinstance(aovs, str) else ",".join(aovs)]
     return args
 
 
 def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip_existing=False, force=False,
-                     threads=0, client=None, scheduler=None, workers=None, retries=DEFAULT_RETRIES,
+                     threads=0, aovs=None, client=None, scheduler=None, workers=None, retries=DEFAULT_RETRIES,
                      chunk_size=1, progress=True):
     """Denoises every frame of `pattern` with `chain` into `output_pattern`.
 
@@ -141,7 +145,9 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     options such as "--aov normal=n.####.exr -d half"); `frames` is an mcdtool
     frame list or a sequence of integers. `skip_existing` and `force` are
     mcdtool's --skip-existing and --force; `threads` the library threads per
-    frame (0: all cores).
+    frame (0: all cores). `aovs` ("auto" or pass names) is mcdtool's
+    --aovs: with a --denoise in `chain`, the light passes are denoised with
+    the beauty so they still add up to it.
 
     Runs on `client` (a dask.distributed.Client), else on the Dask scheduler
     at `scheduler` ("tcp://HOST:PORT"), else on a local process pool of
@@ -151,7 +157,7 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     `progress`, a line per frame goes to stderr. Returns a BatchSummary;
     raises UsageError (before any work) for a malformed chain or pattern.
     """
-    args = sequence_args(pattern, frames, chain, output_pattern, options, skip_existing, force, threads)
+    args = sequence_args(pattern, frames, chain, output_pattern, options, skip_existing, force, threads, aovs)
     return run_batch(args, client=client, scheduler=scheduler, workers=workers, retries=retries,
                      chunk_size=chunk_size, progress=progress)
 

@@ -5,6 +5,7 @@
 // are bound first, in module.cpp.
 #include "operations.h"
 
+#include "denoise_layers.h"
 #include "operation.h"
 
 #include <mcdenoise/mcdenoise.h>
@@ -55,6 +56,7 @@ void bind_operations(py::module_& m)
     def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"),
                   arg("factor") = mcd::default_firefly_factor, arg("radius") = mcd::default_firefly_radius);
     def_operation(m, "denoise", mcd::denoise, arg("beauty"), arg("guides") = py::none());
+    bind_denoise_layers(m);
     def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"),
                   arg("epsilon") = mcd::default_demodulate_epsilon);
     def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"),
