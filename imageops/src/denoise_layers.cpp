@@ -8,7 +8,6 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <numeric>
 #include <string>
 
 namespace mcdenoise {
@@ -39,10 +38,23 @@ bool check_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers, con
     return true;
 }
 
+/// Channels of `src` over its overlap with `window` into the float image
+/// `into` (data window `window`), from channel `chbegin` on.
+bool put_channels(const ImageBuf& src, const ROI& window, int chbegin, ImageBuf& into)
+{
+    ROI from = OIIO::roi_intersection(src.roi(), window);
+    if (!from.defined() || from.npixels() == 0)
+        return true;
+    from.chbegin = 0;
+    from.chend   = src.nchannels();
+    return src.get_pixels(from, OIIO::TypeDesc::FLOAT, into.pixeladdr(from.xbegin, from.ybegin, 0, chbegin),
+                          into.pixel_stride(), into.scanline_stride());
+}
+
 /// The beauty's channels, then each layer's, as float over the beauty's
 /// data window; layer pixels outside their own data window are 0.
 bool stack(ImageBuf& dst, const ImageBuf& beauty, const std::vector<const ImageBuf*>& layers,
-           int nthreads, ImageBuf& stacked)
+           ImageBuf& stacked)
 {
     OIIO::ImageSpec spec = beauty.spec();
     spec.set_format(OIIO::TypeDesc::FLOAT);
@@ -52,15 +64,10 @@ bool stack(ImageBuf& dst, const ImageBuf& beauty, const std::vector<const ImageB
             spec.channelnames.push_back(name);
     spec.nchannels = int(spec.channelnames.size());
     stacked.reset(spec, OIIO::InitializePixels::Yes);
-    ROI into     = beauty.roi();
-    bool ok      = OIIO::ImageBufAlgo::paste(stacked, into.xbegin, into.ybegin, 0, 0, beauty,
-                                             beauty.roi(), nthreads);
-    int chbegin  = beauty.nchannels();
+    bool ok     = put_channels(beauty, beauty.roi(), 0, stacked);
+    int chbegin = beauty.nchannels();
     for (const ImageBuf* layer : layers) {
-        ROI from = OIIO::roi_intersection(layer->roi(), beauty.roi());
-        ok       = ok && (!from.defined() || from.npixels() == 0
-                    || OIIO::ImageBufAlgo::paste(stacked, from.xbegin, from.ybegin, 0, chbegin,
-                                                 *layer, from, nthreads));
+        ok = ok && put_channels(*layer, beauty.roi(), chbegin, stacked);
         chbegin += layer->nchannels();
     }
     if (!ok)
@@ -73,21 +80,28 @@ bool stack(ImageBuf& dst, const ImageBuf& beauty, const std::vector<const ImageB
 bool split(ImageBuf& dst, const ImageBuf& stacked, int chbegin, const ImageBuf& like,
            const ROI& roi, int nthreads, ImageBuf& out)
 {
-    const int n = like.nchannels();
-    std::vector<int> order(static_cast<size_t>(n));
-    std::iota(order.begin(), order.end(), chbegin);
-    ImageBuf part;
-    ROI pixels    = roi;
+    const int n          = like.nchannels();
+    OIIO::ImageSpec spec = stacked.spec();
+    spec.nchannels       = n;
+    spec.channelnames    = like.spec().channelnames;
+    spec.alpha_channel   = like.spec().alpha_channel;
+    spec.z_channel       = -1;
+    ImageBuf part(spec, OIIO::InitializePixels::No);
+    ROI from    = roi;
+    from.chbegin = chbegin;
+    from.chend   = chbegin + n;
+    ROI pixels   = roi;
     pixels.chbegin = 0;
     pixels.chend   = n;
-    if (!OIIO::ImageBufAlgo::channels(part, stacked, n, order, {}, like.spec().channelnames)
-        || !OIIO::ImageBufAlgo::copy(out, part, OIIO::TypeDesc::UNKNOWN, pixels, nthreads)) {
-        dst.errorfmt("{}: splitting the result: {}{}", op_name, part.geterror(),
+    const bool ok = stacked.get_pixels(from, OIIO::TypeDesc::FLOAT, part.localpixels())
+                    && (out.initialized()
+                            ? OIIO::ImageBufAlgo::copy(out, part, OIIO::TypeDesc::UNKNOWN, pixels,
+                                                       nthreads)
+                            : (out = std::move(part), true));
+    if (!ok)
+        dst.errorfmt("{}: splitting the result: {}{}", op_name, stacked.geterror(),
                      out.geterror());
-        return false;
-    }
-    out.specmod().alpha_channel = like.spec().alpha_channel;
-    return true;
+    return ok;
 }
 
 }  // namespace
@@ -99,7 +113,7 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_layers(dst, layers, roi))
         return false;
     ImageBuf stacked, result;
-    if (!stack(dst, beauty, layers, nthreads, stacked))
+    if (!stack(dst, beauty, layers, stacked))
         return false;
     roi.chbegin = 0;
     roi.chend   = stacked.nchannels();
