@@ -11,6 +11,7 @@
 #include "light_passes.h"
 #include "memory_limit.h"
 #include "output.h"
+#include "parts.h"
 #include "preview.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -151,6 +152,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     const uint64_t memory_limit = memory_limit_bytes(options.memory_limit_mb);
     ImageFiles files(stats, memory_limit);
     const ImageBuf& input = files.get(input_path, "input");
+    const std::vector<Part> parts = file_parts(input_path, "input");
     warn_if_display_referred(input, "input");
     Discovery found = discover_channels(input.spec(), options.beauty_channels, input_path);
     Guides guides = load_guides(input, input_path, found, options, path_of, files);
@@ -182,7 +184,10 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         std::string path = path_of(step.output);
         OutputImage output = compose_output(input, written_channels(found.beauty, layers),
                                             written_pixels(current, layers), options, path);
-        batch.write(path, output.spec, output.pixels, "-o", output.stored);
+        if (!parts.empty() && writes_parts(path))
+            write_parts(batch, path, parts, output.pixels, options, "-o");
+        else
+            batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (output.beauty_only && input.nchannels() > int(found.beauty.size()))
             std::fprintf(stderr,
                          "mcdtool WARNING: -o %s : the format cannot keep %d channels by name: the beauty only "

@@ -168,7 +168,13 @@ std::string help_markdown()
           "channel and the input's metadata with only the beauty channels replaced, in the input's "
           "pixel types and compression unless `-d` or `--compression` say otherwise. Files are "
           "written to a temp file beside the target and renamed into place once the whole frame "
-          "succeeded; an input is never replaced unless `--force` is given.\n\n";
+          "succeeded; an input is never replaced unless `--force` is given.\n\n"
+          "A multi-part OpenEXR (Arnold, RenderMan and Nuke put the beauty and each AOV in a part of "
+          "its own) is read as one channel list, so the beauty, the guides and the light passes are "
+          "found across parts: a channel of a part other than the first that has no layer gets the "
+          "part's name as its layer (`R` in part `diffuse` is `diffuse.R`). An EXR output has the same "
+          "parts, part names, channel names, compression and pixel types (`-d` and `--compression` apply "
+          "to every part); the parts must share their data and display windows.\n\n";
 
     md += "## Commands\n\n| command | guides | library call | what it does |\n|---|---|---|---|\n";
     for (const Command& command : command_table())

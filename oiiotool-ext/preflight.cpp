@@ -7,6 +7,7 @@
 #include "error.h"
 #include "frames.h"
 #include "light_passes.h"
+#include "parts.h"
 #include "preview.h"
 #include "roles.h"
 
@@ -22,7 +23,7 @@ using OIIO::Strutil::fmt::format;
 
 namespace {
 
-/// The header of `path` (subimage 0), or nullopt if it cannot be read
+/// The header of `path` (all parts merged), or nullopt if it cannot be read
 /// (the frame's run then reports why).
 std::optional<ImageSpec> header(const std::string& path)
 {
@@ -31,7 +32,8 @@ std::optional<ImageSpec> header(const std::string& path)
         OIIO::geterror();
         return std::nullopt;
     }
-    return in->spec();
+    const std::vector<Part> parts = file_parts(path, "input");
+    return parts.empty() ? in->spec() : merged_spec(parts);
 }
 
 /// The first frame whose input exists.
