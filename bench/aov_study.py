@@ -13,8 +13,10 @@ weights (`denoise` on the pass, guides normal, depth, albedo, its variance
 estimated) and then rebuilt, and each light product Col x (Dir + Ind)
 denoised on its own.
 
-Usage: PYTHONPATH=build/python /usr/bin/python3 bench/aov_study.py MCDTOOL DIR SCENE...
-where DIR holds SCENE_16.exr and SCENE_ref.exr for every SCENE.
+Usage: PYTHONPATH=build/python /usr/bin/python3 bench/aov_study.py MCDTOOL DIR SCENE... [--figure FILE.png]
+where DIR holds SCENE_16.exr and SCENE_ref.exr for every SCENE. --figure
+writes the first scene's beauty and indirect passes, raw | denoised |
+reference, as one sRGB PNG.
 """
 import os
 import subprocess
@@ -112,10 +114,39 @@ def study(mcdtool, folder, scene):
     print(f"\nWritten beauty against the rebuild of the written passes: relMSE {consistency:.2e}")
 
 
+def srgb(linear):
+    """Display-referred 8-bit values of `linear` (clamped to [0, 1])."""
+    x = np.clip(linear, 0.0, 1.0)
+    return np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
+
+
+def figure(folder, scene, path):
+    """Rows: beauty, DiffInd, GlossInd; columns: raw, denoised, reference."""
+    noisy, ref = read(os.path.join(folder, f"{scene}_16.exr")), read(os.path.join(folder, f"{scene}_ref.exr"))
+    layered = read(os.path.join(folder, f"{scene}_aovs.exr"))
+    rows = []
+    for name in ("", "DiffInd", "GlossInd"):
+        get = (lambda img: rgb(img)) if not name else (lambda img, n=name: pass_of(img, n))
+        rows.append(np.concatenate([srgb(get(img)) for img in (noisy, layered, ref)], axis=1))
+    pixels = np.concatenate(rows, axis=0).astype(np.float32)
+    h, w, _ = pixels.shape
+    buf = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, oiio.UINT8))
+    buf.set_pixels(oiio.ROI(), pixels)
+    assert buf.write(path), buf.geterror()
+
+
 def main():
-    mcdtool, folder, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
+    args = sys.argv[1:]
+    figure_path = None
+    if "--figure" in args:
+        at = args.index("--figure")
+        figure_path = args[at + 1]
+        del args[at:at + 2]
+    mcdtool, folder, scenes = args[0], args[1], args[2:]
     for scene in scenes:
         study(mcdtool, folder, scene)
+    if figure_path:
+        figure(folder, scenes[0], figure_path)
 
 
 if __name__ == "__main__":

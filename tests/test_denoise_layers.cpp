@@ -2,7 +2,8 @@
 // per-pixel operator to every layer: layers that sum to the beauty sum to
 // the denoised beauty, a brute-force reading of each layer pixel as the
 // weighted sum of one-hot layers, the beauty bit-identical to denoise's,
-// premultiplied alpha kept at or above the colour, and bad layers refused.
+// premultiplied alpha kept at or above the colour, a layer's pixels outside
+// its data window read as 0, and bad layers refused.
 #include <mcdenoise/mcdenoise.h>
 
 #include "support/guide_images.h"
@@ -160,6 +161,22 @@ TEST(DenoiseLayers, TheBeautyIsBitIdenticalToDenoisesWithAnyLayers)
         EXPECT_TRUE(testimg::bit_identical(part_out, mcdenoise::denoise(beauty, g, part)));
         EXPECT_EQ(part_outs[0].roi(), ROI(3, 30, 2, 20, 0, 1, 0, 1));
     }
+}
+
+TEST(DenoiseLayers, ALayerReadsAsZeroOutsideItsDataWindow)
+{
+    const ImageBuf beauty = noisy_rgba(30, 24, 61);
+    const ImageBuf full   = testimg::random_image(30, 24, 3, 12);
+    const ROI inner(6, 22, 5, 19, 0, 1, 0, 3);
+    const ImageBuf cropped = IBA::crop(full, inner);  // data window inner only
+    ImageBuf padded        = IBA::zero(ROI(0, 30, 0, 24, 0, 1, 0, 3));
+    ASSERT_TRUE(IBA::copy(padded, full, OIIO::TypeUnknown, inner));
+    const ROI part(8, 20, 7, 17);
+    ImageBuf a, b;
+    std::vector<ImageBuf> from_cropped, from_padded;
+    ASSERT_TRUE(mcdenoise::denoise_layers(a, from_cropped, beauty, { &cropped }, {}, part)) << a.geterror();
+    ASSERT_TRUE(mcdenoise::denoise_layers(b, from_padded, beauty, { &padded }, {}, part));
+    EXPECT_TRUE(testimg::bit_identical(from_cropped[0], from_padded[0]));
 }
 
 TEST(DenoiseLayers, PremultipliedColourStaysAtOrBelowAlpha)

@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <string>
 
 namespace mcdenoise {
@@ -63,7 +64,12 @@ bool stack(ImageBuf& dst, const ImageBuf& beauty, const std::vector<const ImageB
         for (const std::string& name : layer->spec().channelnames)
             spec.channelnames.push_back(name);
     spec.nchannels = int(spec.channelnames.size());
-    stacked.reset(spec, OIIO::InitializePixels::Yes);
+    // zeros only where some layer does not cover the beauty's data window
+    const bool covered = std::all_of(layers.begin(), layers.end(), [&](const ImageBuf* layer) {
+        const ROI l = layer->roi(), b = beauty.roi();
+        return l.xbegin <= b.xbegin && l.xend >= b.xend && l.ybegin <= b.ybegin && l.yend >= b.yend;
+    });
+    stacked.reset(spec, covered ? OIIO::InitializePixels::No : OIIO::InitializePixels::Yes);
     bool ok     = put_channels(beauty, beauty.roi(), 0, stacked);
     int chbegin = beauty.nchannels();
     for (const ImageBuf* layer : layers) {
