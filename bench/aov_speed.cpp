@@ -1,7 +1,7 @@
 // aov_speed.cpp: what each extra light pass costs `denoise_layers`: the
 // fastest of a few runs of `denoise` on a testrender frame's beauty, then of
-// `denoise_layers` with 1, 2 and 4 of its 3-channel passes, printed as the
-// table of docs/benchmarks.md.
+// `denoise_layers` with 1, 2 and 4 of its 3-channel passes (run in turn,
+// the fastest of each kept), printed as the table of docs/aovs.md.
 //
 // Usage: aov_speed FILE.exr [THREADS [RUNS]]   (a `testrender --passes` render)
 #include <mcdenoise/mcdenoise.h>
@@ -14,22 +14,31 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
 
-/// The fastest of `runs` calls of `fn`, in seconds.
-template<class Fn>
-double fastest(int runs, Fn&& fn)
+/// CPU seconds of the process (every thread), which other programs on a
+/// busy machine change far less than the wall time.
+double cpu_seconds()
 {
-    double best = 1e30;
-    for (int i = 0; i < runs; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        fn();
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    return best;
+    timespec t {};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+/// Wall and CPU seconds of one call of `fn`.
+template<class Fn>
+std::pair<double, double> seconds(Fn&& fn)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu = cpu_seconds();
+    fn();
+    return { std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+             cpu_seconds() - cpu };
 }
 
 }  // namespace
@@ -59,17 +68,32 @@ int main(int argc, char** argv)
             return 1;
         }
     }
-    const double alone = fastest(runs, [&] { mcdenoise::denoise(r.beauty, guides, {}, threads); });
-    std::printf("| layers | seconds | added per layer (of the beauty's time) |\n|---|---|---|\n");
-    std::printf("| 0 (`denoise`) | %.3f | |\n", alone);
-    for (size_t n : { size_t(1), size_t(2), size_t(4) }) {
-        std::vector<const OIIO::ImageBuf*> layers;
-        for (size_t i = 0; i < n; ++i)
-            layers.push_back(&passes[i]);
-        const double t = fastest(runs, [&] {
-            mcdenoise::denoise_layers(r.beauty, layers, guides, {}, threads);
-        });
-        std::printf("| %zu | %.3f | %.1f %% |\n", n, t, 100.0 * (t - alone) / alone / double(n));
-    }
+    // Round-robin over the configurations, the fastest run of each kept,
+    // so a load that changes during the run hits them all alike.
+    const std::vector<size_t> counts = { 0, 1, 2, 4 };
+    std::vector<double> best(counts.size(), 1e30), best_cpu(counts.size(), 1e30);
+    for (int run = 0; run < runs; ++run)
+        for (size_t k = 0; k < counts.size(); ++k) {
+            std::vector<const OIIO::ImageBuf*> layers;
+            for (size_t i = 0; i < counts[k]; ++i)
+                layers.push_back(&passes[i]);
+            const auto [wall, cpu] = seconds([&] {
+                if (layers.empty())
+                    mcdenoise::denoise(r.beauty, guides, {}, threads);
+                else
+                    mcdenoise::denoise_layers(r.beauty, layers, guides, {}, threads);
+            });
+            best[k]     = std::min(best[k], wall);
+            best_cpu[k] = std::min(best_cpu[k], cpu);
+        }
+    std::printf("| layers | wall s | added per layer (wall) | CPU s | added per layer (CPU) |\n"
+                "|---|---|---|---|---|\n");
+    std::printf("| 0 (`denoise`) | %.3f | | %.3f | |\n", best[0], best_cpu[0]);
+    const auto added = [&](const std::vector<double>& t, size_t k) {
+        return 100.0 * (t[k] - t[0]) / t[0] / double(counts[k]);
+    };
+    for (size_t k = 1; k < counts.size(); ++k)
+        std::printf("| %zu | %.3f | %.1f %% | %.3f | %.1f %% |\n", counts[k], best[k], added(best, k),
+                    best_cpu[k], added(best_cpu, k));
     return 0;
 }
