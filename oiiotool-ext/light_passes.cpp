@@ -49,6 +49,7 @@ const std::vector<KnownPasses> known_passes = {
         "subsurface_", "transmissive_", "emissive_" } },
 };
 
+/// True if `pass` is a Cycles irradiance pass (<Lobe>Dir, <Lobe>Ind).
 bool is_cycles_light(const std::string& pass)
 {
     for (const std::string& lobe : cycles_lobes)
