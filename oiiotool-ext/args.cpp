@@ -156,6 +156,11 @@ const std::vector<OptionSpec>& option_table()
           "Take a guide from FILE: CHANNELS is a comma list or a layer prefix (render.exr:N selects "
           "N.X,N.Y,N.Z); without it, the file's channels in order. Overrides discovery.",
           [](Options& o, const std::vector<std::string>& a) { o.aovs.push_back(parse_aov(a[0])); } },
+        { "aovs", { "auto|LIST" }, "Guides",
+          "With --denoise: denoise these light passes with the beauty's own weights, so passes that add up "
+          "to the beauty still do (auto: every known light pass beside the beauty, see \"Light passes\"; "
+          "LIST: pass names, comma separated). A Cycles-style beauty is rebuilt from its denoised passes.",
+          [](Options& o, const std::vector<std::string>& a) { o.light_passes = a[0]; } },
         { "beauty", { "CHANNELS" }, "Guides",
           "The channels to filter (comma list or layer prefix) instead of the discovered beauty.",
           [](Options& o, const std::vector<std::string>& a) { o.beauty_channels = a[0]; } },

@@ -25,8 +25,8 @@ const std::vector<std::string> beauty_passes = { "Combined", "Ci", "rgba", "beau
 /// The alpha component, kept out of the default beauty (it passes through).
 const std::string alpha = "A";
 
-/// Indices of the channels of pass `pass` in view layer `layer` (pass name
-/// compared without case), in file order.
+}  // namespace
+
 std::vector<int> pass_channels(const ImageSpec& spec, const std::string& layer, const std::string& pass)
 {
     std::vector<int> indices;
@@ -37,6 +37,8 @@ std::vector<int> pass_channels(const ImageSpec& spec, const std::string& layer, 
     }
     return indices;
 }
+
+namespace {
 
 /// `indices` without the alpha channel, unless that would leave nothing.
 std::vector<int> without_alpha(const ImageSpec& spec, const std::vector<int>& indices)
@@ -64,8 +66,8 @@ std::vector<int> find_beauty(const ImageSpec& spec)
     return {};
 }
 
-/// The channels of `candidate` whose components match the beauty's, in the
-/// beauty's order (for half_a / half_b); empty if any is missing.
+}  // namespace
+
 std::vector<int> matching_components(const ImageSpec& spec, const std::vector<int>& candidate,
                                      const std::vector<int>& beauty)
 {
@@ -81,8 +83,6 @@ std::vector<int> matching_components(const ImageSpec& spec, const std::vector<in
     }
     return matched;
 }
-
-}  // namespace
 
 std::vector<int> select_channels(const ImageSpec& spec, std::string_view selector, std::string_view file,
                                  std::string_view context)

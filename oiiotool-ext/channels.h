@@ -33,6 +33,16 @@ struct Discovery {
 std::vector<int> select_channels(const ImageSpec& spec, std::string_view selector,
                                  std::string_view file, std::string_view context);
 
+/// Indices of the channels of pass `pass` in view layer `layer` (pass name
+/// compared without case), in file order.
+std::vector<int> pass_channels(const ImageSpec& spec, const std::string& layer, const std::string& pass);
+
+/// The channels of `candidate` whose components match those of `beauty`,
+/// in the beauty's order (for half_a / half_b and light passes); empty if
+/// any is missing.
+std::vector<int> matching_components(const ImageSpec& spec, const std::vector<int>& candidate,
+                                     const std::vector<int>& beauty);
+
 /// Finds the beauty (or takes `beauty_selector` if not empty) and every
 /// guide role in the beauty's view layer; with no id pass, a Cryptomatte
 /// object layer's rank-0 ids stand in for it. Throws RunError if there is

@@ -74,10 +74,27 @@ mcdenoise::Guides library_guides(const Guides& images)
 /// The present guides of `call` in the library's form.
 mcdenoise::Guides feature_guides(const Call& call) { return library_guides(call.guides); }
 
+/// `denoise` of the beauty with the light passes of `call`, which are
+/// replaced by their denoised forms.
+bool denoise_layers(const Call& call)
+{
+    std::vector<const ImageBuf*> layers;
+    for (const ImageBuf& layer : *call.layers)
+        layers.push_back(&layer);
+    std::vector<ImageBuf> denoised;
+    if (!mcdenoise::denoise_layers(call.dst, denoised, call.beauty, layers, feature_guides(call), {},
+                                   call.nthreads))
+        return false;
+    *call.layers = std::move(denoised);
+    return true;
+}
+
 /// --denoise: the cross-frame form when the call has neighbours (with no
 /// neighbour on disk it equals the single-frame form, bit for bit).
 bool denoise_call(const Call& c)
 {
+    if (c.layers && !c.layers->empty())
+        return denoise_layers(c);
     if (!c.neighbours)
         return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);
     std::vector<mcdenoise::FrameInput> neighbours;
@@ -215,7 +232,7 @@ const std::vector<Command>& command_table()
           "The one-call denoiser: clamps fireflies, then non-local means with the variance (from the "
           "variance guide, the halves, or estimated) and the feature weight of every guide present.",
           "mcdtool render.exr --denoise -o clean.exr",
-          denoise_call, denoise_roles },
+          denoise_call, denoise_roles, true },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
           format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
                  "{0}x{0} neighbours (of the same object when an id guide is present).",

@@ -57,6 +57,8 @@ struct Call {
     /// With --temporal, the neighbouring frames found on disk (maybe none):
     /// --denoise then makes the cross-frame call; nullptr otherwise.
     const std::vector<Neighbour>* neighbours = nullptr;
+    /// The light passes (--aovs) a command that takes them denoises in place.
+    std::vector<ImageBuf>* layers = nullptr;
 
     /// Parameter `i` as an int (validated at parse time).
     int integer(size_t i) const;
@@ -82,6 +84,7 @@ struct Command {
     const char* example;           ///< a full mcdtool command line
     CallFn call;
     std::vector<Role> optional_roles = {};  ///< guides it uses when present
+    bool takes_layers = false;     ///< denoises the --aovs light passes with the beauty
 };
 
 /// Every command, in help order.

@@ -9,7 +9,9 @@
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
+#include "light_passes.h"
 #include "output.h"
+#include "parts.h"
 #include "preview.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -89,6 +91,17 @@ void report_channels(const std::string& input_path, const ImageBuf& input, const
     }
 }
 
+/// With -v: the light passes --aovs denoises, and whether the beauty is rebuilt from them.
+void report_light_passes(const std::string& input_path, const LightLayers& layers)
+{
+    std::vector<std::string> names;
+    for (const LightPass& pass : layers.passes)
+        names.push_back(pass.name);
+    std::printf("mcdtool: %-8s <- %s: %s%s\n", "aovs", input_path.c_str(),
+                names.empty() ? "(none found)" : OIIO::Strutil::join(names, ",").c_str(),
+                layers.rebuild ? " (the beauty is rebuilt from them)" : "");
+}
+
 /// With -v and --temporal: the neighbouring frames --denoise takes.
 void report_neighbours(int frame, const std::vector<Neighbour>& neighbours)
 {
@@ -101,13 +114,14 @@ void report_neighbours(int frame, const std::vector<Neighbour>& neighbours)
 
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed.
-ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, int nthreads, bool verbose,
-                     RunStats& stats, const std::vector<Neighbour>* neighbours)
+ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, LightLayers& layers,
+                     int nthreads, bool verbose, RunStats& stats, const std::vector<Neighbour>* neighbours)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, nthreads, neighbours };
+    Call call{ dst, current, guides, step.values, nthreads, neighbours,
+               command.takes_layers ? &layers.images : nullptr };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
@@ -122,7 +136,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     if (verbose)
         std::printf("mcdtool: %s %s  %.3f s\n", name.c_str(), OIIO::Strutil::join(step.values, " ").c_str(),
                     seconds);
-    return dst;
+    return command.takes_layers && layers.rebuild ? rebuild_beauty(layers, dst) : dst;
 }
 
 /// The inputs of one frame, and with --temporal its neighbours on disk.
@@ -167,6 +181,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     const std::string& input_path = inputs.path;
     const Discovery& found = inputs.found;
     const Guides& guides = inputs.guides;
+    const std::vector<Part> parts = file_parts(input_path, "input");
     if (options.verbose)
         report_channels(input_path, input, found, guides);
     if (options.verbose && options.temporal > 0 && frame)
@@ -181,17 +196,27 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
 
     const ImageBuf& before = inputs.beauty;
     ImageBuf current = before;
+    LightLayers layers;
+    if (!options.light_passes.empty())
+        layers = load_light_layers(input, find_light_passes(input.spec(), options.light_passes, found, input_path),
+                                   before, input_path);
+    if (options.verbose && !options.light_passes.empty())
+        report_light_passes(input_path, layers);
     OutputBatch batch(stats);
     for (const Step& step : options.steps) {
         if (step.command) {
             const bool across_frames = options.temporal > 0 && frame && std::string(step.command->name) == "denoise";
-            current = run_command(step, current, guides, options.threads, options.verbose, stats,
+            current = run_command(step, current, guides, layers, options.threads, options.verbose, stats,
                                   across_frames ? &loaded.neighbours : nullptr);
             continue;
         }
         std::string path = path_of(step.output);
-        OutputImage output = compose_output(input, found.beauty, current, options, path);
-        batch.write(path, output.spec, output.pixels, "-o", output.stored);
+        OutputImage output = compose_output(input, written_channels(found.beauty, layers),
+                                            written_pixels(current, layers), options, path);
+        if (!parts.empty() && writes_parts(path))
+            write_parts(batch, path, parts, output.pixels, options, "-o");
+        else
+            batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (output.beauty_only && input.nchannels() > int(found.beauty.size()))
             std::fprintf(stderr,
                          "mcdtool WARNING: -o %s : the format cannot keep %d channels by name: the beauty only "

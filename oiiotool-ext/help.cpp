@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "options.h"
+#include "light_passes.h"
 #include "roles.h"
 
 #include <OpenImageIO/imageio.h>
@@ -180,6 +181,9 @@ std::string help_text()
     for (const RoleInfo& info : role_table())
         text += help_row(info.name, format("{}. Channels: {}. Found as: {}.", info.what, channel_count_text(info),
                                            pass_names_text(info)));
+    text += "\nLight passes (--aovs auto, in the beauty's view layer):\n";
+    for (const auto& [renderer, names] : known_light_passes())
+        text += help_row(renderer, names + ".");
     for (const std::string& group : option_groups) {
         text += "\n" + group + ":\n";
         for (const OptionSpec& option : option_table())
@@ -205,7 +209,13 @@ std::string help_markdown()
           "channel and the input's metadata with only the beauty channels replaced, in the input's "
           "pixel types and compression unless `-d` or `--compression` say otherwise. Files are "
           "written to a temp file beside the target and renamed into place once the whole frame "
-          "succeeded; an input is never replaced unless `--force` is given.\n\n";
+          "succeeded; an input is never replaced unless `--force` is given.\n\n"
+          "A multi-part OpenEXR (Arnold, RenderMan and Nuke put the beauty and each AOV in a part of "
+          "its own) is read as one channel list, so the beauty, the guides and the light passes are "
+          "found across parts: a channel of a part other than the first that has no layer gets the "
+          "part's name as its layer (`R` in part `diffuse` is `diffuse.R`). An EXR output has the same "
+          "parts, part names, channel names, compression and pixel types (`-d` and `--compression` apply "
+          "to every part); the parts must share their data and display windows.\n\n";
 
     md += "## Commands\n\n| command | guides | library call | what it does |\n|---|---|---|---|\n";
     for (const Command& command : command_table())
@@ -243,6 +253,21 @@ std::string help_markdown()
         md += format("| `{}` | `{}` | {} | {} | {} |\n", info.name, info.argument, channel_count_text(info),
                      cell(info.what), pass_names_text(info));
     md += motion_guide_text;
+
+    md += "\n## Light passes\n\n`--aovs auto` (with `--denoise`) denoises every pass of the beauty's view "
+          "layer named below, with the beauty's own per-pixel weights (`mcdenoise::denoise_layers`), so "
+          "passes that add up to the beauty add up to the written beauty. Only the pass's channels "
+          "matching the beauty's colour (`R,G,B`) change; its alpha, the colour (filter) passes "
+          "(`DiffCol`, `GlossCol`, `TransCol`, `*_albedo`), the guides and the ids are never changed. "
+          "`--aovs LIST` names the passes (comma separated) instead; a name that is missing, a colour "
+          "pass, a guide or the beauty is an error before any work. Cycles' `<Lobe>Dir` and `<Lobe>Ind` "
+          "are irradiance (the light divided by `<Lobe>Col`): they are denoised as they are and, when "
+          "the raw passes add up to the raw beauty (relMSE at most 1e-4), the written beauty is their "
+          "recombination, the sum of `<Lobe>Col x (<Lobe>Dir + <Lobe>Ind)` and the other passes, so "
+          "the compositor's rebuild equals it; otherwise a warning says so and the beauty is denoised "
+          "on its own. docs/aovs.md has the measurements.\n\n| renderer | passes |\n|---|---|\n";
+    for (const auto& [renderer, names] : known_light_passes())
+        md += format("| {} | {} |\n", renderer, cell(names));
 
     md += "\n## Options\n";
     for (const std::string& group : option_groups) {

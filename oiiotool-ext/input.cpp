@@ -5,6 +5,7 @@
 
 #include "error.h"
 #include "memory_limit.h"
+#include "parts.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -44,11 +45,17 @@ ImageBuf read_image(const std::string& path, std::string_view context, uint64_t 
     require_memory(float_bytes(spec.image_pixels(), uint64_t(std::max(spec.nchannels, 0))), memory_limit,
                    std::string(context),
                    format("'{}' ({} x {}, {} channels, as float)", path, spec.width, spec.height, spec.nchannels));
+    if (image.nsubimages() > 1) {
+        const std::vector<Part> parts = file_parts(path, context);
+        const ImageSpec merged = merged_spec(parts);
+        require_memory(float_bytes(merged.image_pixels(), uint64_t(merged.nchannels)), memory_limit,
+                       std::string(context),
+                       format("'{}' ({} x {}, {} channels in {} parts, as float)", path, merged.width, merged.height,
+                              merged.nchannels, parts.size()));
+        return read_parts(path, parts, context);
+    }
     if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT) || image.has_error())
         throw RunError(format("{} : cannot read '{}': {}", context, path, read_error(image)));
-    if (image.nsubimages() > 1)
-        throw RunError(format("{} : '{}' has {} parts (subimages); only single-part files are supported, "
-                              "split it with oiiotool first", context, path, image.nsubimages()));
     return image;
 }
 

@@ -41,6 +41,7 @@ struct Options {
     std::vector<Step> steps;
     std::vector<AovRequest> aovs;
     std::string beauty_channels;     ///< --beauty (empty: discover)
+    std::string light_passes;        ///< --aovs auto|LIST (empty: none)
     std::string frames;              ///< --frames (empty: a single image)
     int temporal = 0;                ///< --temporal: frames before and after each frame --denoise uses
     std::string data_format;         ///< -d (empty: the input's)

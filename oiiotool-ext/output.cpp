@@ -98,17 +98,27 @@ OutputBatch::~OutputBatch()
     }
 }
 
+namespace {
+
+/// The error of writing `path` (through `temp`) with `reason`, which names
+/// the final path, never the temp file.
+RunError write_error(const std::string& path, const std::string& temp, const std::string& context,
+                     const std::string& reason)
+{
+    std::string named = OIIO::Strutil::replace(reason, temp, path, true);
+    named = OIIO::Strutil::replace(named, std::filesystem::path(temp).filename().string(),
+                                   std::filesystem::path(path).filename().string(), true);
+    return RunError(format("{} : cannot write '{}': {}", context, path, one_line(named)));
+}
+
+}  // namespace
+
 void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
                         const std::string& context, const std::map<int, ImageBuf>& stored)
 {
     Timer timer;
     std::string temp = temp_path(path);
-    auto fail = [&](const std::string& reason) {
-        std::string named = OIIO::Strutil::replace(reason, temp, path, true);
-        named = OIIO::Strutil::replace(named, std::filesystem::path(temp).filename().string(),
-                                       std::filesystem::path(path).filename().string(), true);
-        return RunError(format("{} : cannot write '{}': {}", context, path, one_line(named)));
-    };
+    auto fail = [&](const std::string& reason) { return write_error(path, temp, context, reason); };
     auto out = OIIO::ImageOutput::create(temp);
     if (!out)
         throw fail(OIIO::geterror());
@@ -126,6 +136,28 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
                                 : out->write_image(TypeDesc::FLOAT, float_pixels(pixels, storage));
     if (!written)
         throw fail(out->geterror());
+    if (!out->close())
+        throw fail(out->geterror());
+    stats_.add_write(timer.seconds());
+}
+
+void OutputBatch::write_parts(const std::string& path, const std::vector<ImageSpec>& specs,
+                              const std::vector<ImageBuf>& pixels, const std::string& context)
+{
+    Timer timer;
+    std::string temp = temp_path(path);
+    auto fail = [&](const std::string& reason) { return write_error(path, temp, context, reason); };
+    auto out = OIIO::ImageOutput::create(temp);
+    if (!out)
+        throw fail(OIIO::geterror());
+    pending_.push_back(Pending{ temp, path, track_temp_file(temp) });  // from here on it is removed on failure
+    std::vector<float> storage;
+    for (size_t p = 0; p < specs.size(); ++p) {
+        const bool opened = p == 0 ? out->open(temp, int(specs.size()), specs.data())
+                                   : out->open(temp, specs[p], OIIO::ImageOutput::AppendSubimage);
+        if (!opened || !out->write_image(TypeDesc::FLOAT, float_pixels(pixels[p], storage)))
+            throw fail(out->geterror());
+    }
     if (!out->close())
         throw fail(out->geterror());
     stats_.add_write(timer.seconds());

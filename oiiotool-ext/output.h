@@ -38,6 +38,10 @@ public:
     /// "<context> : cannot write '<path>': <reason>".
     void write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
                const std::string& context, const std::map<int, ImageBuf>& stored = {});
+    /// Writes the parts `specs` of a multi-part file, part p's float pixels
+    /// from `pixels[p]`, as `write` does.
+    void write_parts(const std::string& path, const std::vector<ImageSpec>& specs,
+                     const std::vector<ImageBuf>& pixels, const std::string& context);
     /// Renames every temp file into place. Throws RunError on failure.
     void commit();
 

@@ -7,6 +7,8 @@
 #include "error.h"
 #include "foreign_motion.h"
 #include "frames.h"
+#include "light_passes.h"
+#include "parts.h"
 #include "preview.h"
 #include "roles.h"
 
@@ -23,7 +25,7 @@ using OIIO::Strutil::fmt::format;
 
 namespace {
 
-/// The header of `path` (subimage 0), or nullopt if it cannot be read
+/// The header of `path` (all parts merged), or nullopt if it cannot be read
 /// (the frame's run then reports why).
 std::optional<ImageSpec> header(const std::string& path)
 {
@@ -32,7 +34,8 @@ std::optional<ImageSpec> header(const std::string& path)
         OIIO::geterror();
         return std::nullopt;
     }
-    return in->spec();
+    const std::vector<Part> parts = file_parts(path, "input");
+    return parts.empty() ? in->spec() : merged_spec(parts);
 }
 
 /// The first frame whose input exists.
@@ -49,9 +52,12 @@ std::optional<std::optional<int>> first_readable_frame(const Options& options)
 void check_selectors(const Options& options, std::optional<int> frame)
 {
     auto path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
-    if (!options.beauty_channels.empty())
-        if (auto spec = header(path_of(options.input)))
-            discover_channels(*spec, options.beauty_channels, path_of(options.input));
+    if (!options.beauty_channels.empty() || !options.light_passes.empty())
+        if (auto spec = header(path_of(options.input))) {
+            const Discovery found = discover_channels(*spec, options.beauty_channels, path_of(options.input));
+            if (!options.light_passes.empty())
+                find_light_passes(*spec, options.light_passes, found, path_of(options.input));
+        }
     for (const AovRequest& aov : options.aovs)
         if (!aov.channels.empty())
             if (auto spec = header(path_of(aov.file)))
@@ -88,6 +94,16 @@ void check_parameters(const Options& options)
     }
 }
 
+/// --aovs needs a command that denoises the light passes.
+void check_light_passes(const Options& options)
+{
+    if (options.light_passes.empty()
+        || std::any_of(options.steps.begin(), options.steps.end(),
+                       [](const Step& s) { return s.command && s.command->takes_layers; }))
+        return;
+    throw UsageError("--aovs : needs --denoise, which denoises the light passes with the beauty");
+}
+
 /// Throws unless --temporal N > 0 comes with what it works on: a sequence
 /// (--frames) and a --denoise step.
 void check_temporal(const Options& options)
@@ -103,6 +119,9 @@ void check_temporal(const Options& options)
     if (first == options.steps.end() || std::string(first->command->name) != "denoise")
         throw UsageError(format("--temporal {} : only --denoise works across frames, and it must be the first "
                                 "command (the neighbouring frames enter it as read)", options.temporal));
+    if (!options.light_passes.empty())
+        throw UsageError(format("--temporal {} : cannot be combined with --aovs: the light passes are denoised "
+                                "one frame at a time (run --aovs without --temporal)", options.temporal));
 }
 
 /// With --temporal, warns once when `frame`'s input has no motion guide but
@@ -143,6 +162,7 @@ std::vector<std::optional<int>> frames_to_run(const Options& options)
 void check_arguments(const Options& options)
 {
     check_parameters(options);
+    check_light_passes(options);
     try {
         if (!options.preview.empty() || !options.display.empty() || !options.view.empty()
             || !options.ocio_config.empty())

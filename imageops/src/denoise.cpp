@@ -6,6 +6,7 @@
 
 #include "denoise_frame.h"
 #include "feature_field.h"
+#include "layer_channels.h"
 #include "operation.h"
 #include "window.h"
 
@@ -133,13 +134,14 @@ ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
     return region;
 }
 
-bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
-                           const ROI& region, int nthreads, DenoiseFrame& frame)
+bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+                           const Guides& guides, const ROI& region, int nthreads,
+                           DenoiseFrame& frame)
 {
     frame.guides           = guides;  // the object id is not read (see denoise.h)
     frame.guides.object_id = nullptr;
-    if (!clamp_fireflies(frame.clamped, beauty, frame.guides, firefly_factor, firefly_radius,
-                         region, nthreads)) {
+    if (!clamp_fireflies_layers(frame.clamped, beauty, layer_begin, frame.guides,
+                                firefly_factor, firefly_radius, region, nthreads)) {
         dst.errorfmt("{}: {}", op_name, frame.clamped.geterror());
         return false;
     }
@@ -159,12 +161,18 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& 
 
 bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
 {
+    return denoise_stacked(dst, beauty, beauty.nchannels(), guides, roi, nthreads);
+}
+
+bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+                     const Guides& guides, ROI roi, int nthreads)
+{
     if (!resolve_roi(op_name, dst, beauty, roi)
         || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
     DenoiseFrame frame;
-    if (!prepare_denoise_frame(dst, beauty, guides, denoise_region(beauty, roi), nthreads,
-                               frame)
+    if (!prepare_denoise_frame(dst, beauty, layer_begin, guides, denoise_region(beauty, roi),
+                               nthreads, frame)
         || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
                     denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
                     nthreads))

@@ -23,10 +23,12 @@ struct DenoiseFrame {
 };
 
 /// `denoise`'s steps before the average on `beauty` over `region` (all its
-/// channels): clamp the fireflies, then take the variance from the guide,
-/// the halves or an estimate. Object ids are dropped from the guides.
-/// The guides must have been checked; on failure sets `dst`'s error.
-bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+/// channels): clamp the fireflies (the scale decided on the colour applied
+/// to the colour and to the stacked layers from channel `layer_begin` on,
+/// layer_channels.h), then take the variance from the guide, the halves or
+/// an estimate. Object ids are dropped from the guides. The guides must
+/// have been checked; on failure sets `dst`'s error.
+bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, int layer_begin,
                            const Guides& guides, const OIIO::ROI& region, int nthreads,
                            DenoiseFrame& frame);
 

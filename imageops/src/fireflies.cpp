@@ -3,6 +3,7 @@
 #include <mcdenoise/fireflies.h>
 
 #include "feature_field.h"
+#include "layer_channels.h"
 #include "offset_walk.h"
 #include "operation.h"
 #include "window.h"
@@ -99,6 +100,14 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
 bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, float factor,
                      int radius, ROI roi, int nthreads)
 {
+    return clamp_fireflies_layers(dst, beauty, beauty.nchannels(), guides, factor, radius, roi,
+                                  nthreads);
+}
+
+bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+                            const Guides& guides, float factor, int radius, ROI roi,
+                            int nthreads)
+{
     if (!(factor >= 1.0f) || !std::isfinite(factor)) {
         dst.errorfmt("{}: factor must be a finite number >= 1, got {}", op_name, factor);
         return false;
@@ -140,7 +149,7 @@ bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
             const float* in   = block.pixel(x, y);
             for (int ch = roi.chbegin; ch < roi.chend; ++ch) {
                 const float v = in[ch];
-                const bool scaled = ch < ncolour && std::isfinite(v);
+                const bool scaled = (ch < ncolour || ch >= layer_begin) && std::isfinite(v);
                 out[ch - roi.chbegin] = scaled ? v * scale : v;
             }
         }

@@ -109,7 +109,8 @@ bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& cen
     dw.chend   = n.beauty->nchannels();
     DenoiseFrame frame;
     FeatureInputs own;
-    if (!prepare_denoise_frame(dst, *n.beauty, n.guides, dw, nthreads, frame)
+    if (!prepare_denoise_frame(dst, *n.beauty, n.beauty->nchannels(), n.guides, dw, nthreads,
+                               frame)
         || !load_feature_inputs(op_name, dst, frame.clamped, frame.guides,
                                 temporal_feature_sigmas, dw, dw, nthreads, own))
         return false;
@@ -206,8 +207,8 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
         return false;
     DenoiseFrame c;
     FeatureInputs fin;
-    if (!prepare_denoise_frame(dst, beauty, centre.guides, denoise_region(beauty, roi), nthreads,
-                               c))
+    if (!prepare_denoise_frame(dst, beauty, beauty.nchannels(), centre.guides,
+                               denoise_region(beauty, roi), nthreads, c))
         return false;
     const ROI dw      = c.clamped.roi();
     const ROI search  = grow_and_clip(roi, denoise_search_radius, dw);

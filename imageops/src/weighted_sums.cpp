@@ -4,6 +4,7 @@
 #include "window.h"
 
 
+#include <algorithm>
 #include <cmath>
 
 namespace mcdenoise {
@@ -13,7 +14,6 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
 {
     const int nc = chend - chbegin;
     SumSource src(region, nc);
-    std::vector<LargeVector<float>> finite = Planes<float>(region, nc).values;
     std::vector<uint8_t> row_has_nonfinite(size_t(region.height()));
     parallel_rows(region, nthreads, [&](int y) {
         const float* in = block.pixel(region.xbegin, y);
@@ -22,18 +22,24 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
         for (int i = 0; i < region.width(); ++i, in += block.nchannels)
             for (int c = 0; c < nc; ++c) {
                 const float v = in[chbegin + c];
-                const bool ok = std::isfinite(v);
                 src.values[size_t(c)][at + i] = summable(v);
-                finite[size_t(c)][at + i]     = ok ? 1.0f : 0.0f;
-                any |= !ok;
+                any |= !std::isfinite(v);
             }
         row_has_nonfinite[size_t(y - region.ybegin)] = any;
     });
-    for (uint8_t any : row_has_nonfinite)
-        if (any) {
-            src.finite = std::move(finite);
-            break;
-        }
+    if (std::find(row_has_nonfinite.begin(), row_has_nonfinite.end(), uint8_t(1))
+        == row_has_nonfinite.end())
+        return src;
+    // The finite mask only when some value is not finite: an image of
+    // finite values (the usual case) allocates and writes no mask planes.
+    src.finite = Planes<float>(region, nc).values;
+    parallel_rows(region, nthreads, [&](int y) {
+        const float* in = block.pixel(region.xbegin, y);
+        const size_t at = src.offset(region.xbegin, y);
+        for (int i = 0; i < region.width(); ++i, in += block.nchannels)
+            for (int c = 0; c < nc; ++c)
+                src.finite[size_t(c)][at + i] = std::isfinite(in[chbegin + c]) ? 1.0f : 0.0f;
+    });
     return src;
 }
 

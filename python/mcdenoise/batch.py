@@ -116,11 +116,13 @@ def run_frames(args, frames, retries=DEFAULT_RETRIES):
 
 
 def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_existing=False, force=False,
-                  threads=0, temporal=0):
+                  threads=0, temporal=0, aovs=None):
     """The mcdtool command line (without the program name) that
     `denoise_sequence` runs: `chain` and `options` are mcdtool words, as one
     string or a list of strings (each split like a shell would); `frames` is
-    an mcdtool frame list ("1-48", "1-10x2", "1,3,5") or integers."""
+    an mcdtool frame list ("1-48", "1-10x2", "1,3,5") or integers; `aovs`
+    is mcdtool's --aovs ("auto" or a list of pass names, as a string or a
+    list of strings)."""
     args = [str(pattern)] + _words(chain) + _words(options) + ["-o", str(output_pattern)]
     frames_text = frames if isinstance(frames, str) else ",".join(str(int(f)) for f in frames)
     args += ["--frames", frames_text]
@@ -132,12 +134,14 @@ def sequence_args(pattern, frames, chain, output_pattern, options=(), skip_exist
         args += ["--threads", str(threads)]
     if temporal:
         args += ["--temporal", str(temporal)]
+    if aovs:
+        args += ["--aovs", aovs if isinstance(aovs, str) else ",".join(aovs)]
     return args
 
 
 def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip_existing=False, force=False,
-                     threads=0, temporal=0, client=None, scheduler=None, workers=None, retries=DEFAULT_RETRIES,
-                     chunk_size=1, progress=True):
+                     threads=0, temporal=0, aovs=None, client=None, scheduler=None, workers=None,
+                     retries=DEFAULT_RETRIES, chunk_size=1, progress=True):
     """Denoises every frame of `pattern` with `chain` into `output_pattern`.
 
     `chain` and `options` are mcdtool words ("--object-median 7 --gaussian 3";
@@ -147,6 +151,9 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     frame (0: all cores); `temporal` is mcdtool's --temporal N (--denoise
     with the N frames before and after each frame, read from disk, so every
     task reads the frames its chunk needs and the files equal mcdtool's).
+    `aovs` ("auto" or pass names) is mcdtool's --aovs: with a --denoise in
+    `chain`, the light passes are denoised with the beauty so they still add
+    up to it.
 
     Runs on `client` (a dask.distributed.Client), else on the Dask scheduler
     at `scheduler` ("tcp://HOST:PORT"), else on a local process pool of
@@ -157,7 +164,7 @@ def denoise_sequence(pattern, frames, chain, output_pattern, options=(), *, skip
     raises UsageError (before any work) for a malformed chain or pattern.
     """
     args = sequence_args(pattern, frames, chain, output_pattern, options, skip_existing, force, threads,
-                         temporal)
+                         temporal, aovs)
     return run_batch(args, client=client, scheduler=scheduler, workers=workers, retries=retries,
                      chunk_size=chunk_size, progress=progress)
 

@@ -6,9 +6,10 @@ import os
 from . import locate, options
 
 
-def denoise_file(frame_file, mode, output, pattern, module_dir=""):
-    """Denoises `frame_file`; returns (ok, message) for the reports."""
-    args = options.command_line(frame_file, mode, output, pattern)
+def denoise_file(frame_file, mode, output, pattern, module_dir="", light_passes=False):
+    """Denoises `frame_file` (with its light passes when `light_passes`);
+    returns (ok, message) for the reports."""
+    args = options.command_line(frame_file, mode, output, pattern, light_passes)
     target = args[args.index("-o") + 1]
     try:
         batch = locate.import_batch(module_dir)

@@ -45,7 +45,8 @@ def _on_render_write(scene, *_):
     number = scene.frame_current
     try:
         path = bpy.path.abspath(scene.render.frame_path(frame=number))
-        ok, message = frame.denoise_file(path, options.mode, options.output, options.pattern, _state.module_dir)
+        ok, message = frame.denoise_file(path, options.mode, options.output, options.pattern, _state.module_dir,
+                                         options.light_passes)
     except Exception as error:  # a handler must not stop the render
         ok, message = False, f"{type(error).__name__}: {error}"
     if ok:

@@ -33,7 +33,7 @@ class MCDENOISE_OT_denoise_sequence(options.DenoiseOptions, bpy.types.Operator):
             for done, name in enumerate(names, 1):
                 path = os.path.join(bpy.path.abspath(self.directory), name)
                 ok, message = frame.denoise_file(path, self.mode, self.output, self.pattern,
-                                                 preferences.module_dir(context))
+                                                 preferences.module_dir(context), self.light_passes)
                 failed += not ok
                 self.report({"INFO" if ok else "ERROR"}, f"mcdenoise: {done}/{len(names)}: {message}")
                 window_manager.progress_update(done)

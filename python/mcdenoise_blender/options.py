@@ -31,6 +31,11 @@ class DenoiseOptions:
     """Mix-in: the properties both the scene settings and the operator have."""
     mode: mode_property()
     output: bpy.props.EnumProperty(name="Output", items=OUTPUT_ITEMS, default="IN_PLACE")
+    light_passes: bpy.props.BoolProperty(
+        name="Denoise light passes", default=False,
+        description="With Denoise: also denoise the Diffuse, Glossy, Transmission, Volume, Emission and "
+                    "Environment light passes with the beauty (mcdtool --aovs auto), so the compositor's "
+                    "rebuild of them is the denoised beauty; turns those passes on")
     pattern: bpy.props.StringProperty(
         name="Path", default="{name}_denoised.exr",
         description="Denoised file, relative to the frame's folder: {name} is the frame file's name without "
@@ -46,9 +51,11 @@ def output_path(frame_file, output, pattern):
     return os.path.normpath(os.path.join(os.path.dirname(frame_file), path))
 
 
-def command_line(frame_file, mode, output, pattern):
+def command_line(frame_file, mode, output, pattern, light_passes=False):
     """mcdtool's command line (without the program name) for one frame file;
-    in place is mcdtool's --force (a temp file beside it, renamed over it)."""
+    in place is mcdtool's --force (a temp file beside it, renamed over it);
+    `light_passes` with the Denoise mode adds --aovs auto."""
     target = output_path(frame_file, output, pattern)
-    args = [frame_file] + CHAINS[mode] + ["-o", target]
+    aovs = ["--aovs", "auto"] if light_passes and mode == "DENOISE" else []
+    args = [frame_file] + CHAINS[mode] + aovs + ["-o", target]
     return args + ["--force"] if output == "IN_PLACE" else args

@@ -22,6 +22,8 @@ class RENDER_PT_mcdenoise(bpy.types.Panel):
         column = layout.column()
         column.active = options.enabled
         column.prop(options, "mode")
+        if options.mode == "DENOISE":
+            column.prop(options, "light_passes")
         column.prop(options, "output")
         if options.output == "PATTERN":
             column.prop(options, "pattern")

@@ -6,6 +6,7 @@
 #include "operations.h"
 
 #include "denoise_binding.h"
+#include "denoise_layers.h"
 #include "operation.h"
 
 #include <mcdenoise/mcdenoise.h>
@@ -55,7 +56,8 @@ void bind_operations(py::module_& m)
                   arg("strength") = mcd::default_nlmeans_strength, arg("sigmas") = mcd::FeatureSigmas());
     def_operation(m, "clamp_fireflies", mcd::clamp_fireflies, arg("beauty"), arg("guides"),
                   arg("factor") = mcd::default_firefly_factor, arg("radius") = mcd::default_firefly_radius);
-    bind_denoise(m);  // both forms: one frame, or with its neighbours (denoise_binding.cpp)
+    bind_denoise(m);         // one frame, or with its neighbours (denoise_binding.cpp)
+    bind_denoise_layers(m);  // with light passes: an overload of denoise, and denoise_layers
     def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"),
                   arg("epsilon") = mcd::default_demodulate_epsilon);
     def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"),

@@ -25,6 +25,7 @@ def parse_options():
     parser.add_argument("--format", default="OPEN_EXR_MULTILAYER")
     parser.add_argument("--denoise", action="store_true", help="enable mcdenoise for the render")
     parser.add_argument("--mode", default="DENOISE", help="the add-on's mode (DENOISE, REPORT_CHAIN)")
+    parser.add_argument("--light-passes", action="store_true", help="the add-on also denoises the light passes")
     parser.add_argument("--pattern", help="the add-on writes to this sibling path pattern, not in place")
     parser.add_argument("--raw-dir", help="copy each written frame here before the add-on denoises it")
     parser.add_argument("--operator", nargs="+", metavar="FILE",
@@ -109,6 +110,7 @@ def main():
         keep_raw_frames(options.raw_dir)
     if options.denoise:
         scene.mcdenoise.mode = options.mode
+        scene.mcdenoise.light_passes = options.light_passes
         if options.pattern:
             scene.mcdenoise.output, scene.mcdenoise.pattern = "PATTERN", options.pattern
         scene.mcdenoise.enabled = True   # also turns Cycles' own denoiser off and the passes on

@@ -2,7 +2,8 @@
 animation rendered with `-a` and the add-on enabled from the built zip is
 denoised frame by frame exactly as `mcdtool --denoise` denoises the raw
 frames, leaves every other channel alone and comes closer to a 64-spp render;
-a still (`-f`) with the report's chain goes to a sibling path; a non-EXR
+a still (`-f`) with the report's chain goes to a sibling path; a still with
+"Denoise light passes" equals `mcdtool --aovs auto --denoise`; a non-EXR
 output, or frames that cannot be written, are reported and Blender still
 exits 0; the Image editor's sequence operator writes sibling files equal to
 mcdtool's."""
@@ -104,6 +105,26 @@ def test_still_with_report_chain_to_sibling_path(tmp_path):
     expected = mcdtool_denoise(raw, tmp_path / "expected.exr", ("--object-median", "7", "--gaussian", "3"))
     assert read(out)[1].tobytes() == read(expected)[1].tobytes()
     assert read(out)[1].tobytes() != read(raw)[1].tobytes()
+
+
+def test_light_passes_are_denoised_like_mcdtool_aovs(tmp_path):
+    """With "Denoise light passes" the add-on turns the light passes on and
+    writes what `mcdtool --aovs auto --denoise` writes: the light passes
+    denoised, and a Combined equal to their compositor rebuild."""
+    rendered = run_blender(tmp_path, "--output", tmp_path / "out" / "still_####", "--frames", 1, "--spp", 4,
+                           "--denoise", "--light-passes", "--raw-dir", tmp_path / "raw", render=("-f", "1"))
+    assert rendered.returncode == 0, rendered.stdout
+    assert "turned on the light passes" in rendered.stdout, rendered.stdout
+    raw, out = tmp_path / "raw" / "still_0001.exr", tmp_path / "out" / "still_0001.exr"
+    expected = mcdtool_denoise(raw, tmp_path / "expected.exr", ("--aovs", "auto", "--denoise"))
+    assert read(out)[1].tobytes() == read(expected)[1].tobytes()
+    layer = "ViewLayer."
+    rgb = lambda name: channels(out, [f"{layer}{name}.{c}" for c in "RGB"])
+    rebuilt = rgb("Emit") + rgb("Env")
+    for lobe in ("Diff", "Gloss", "Trans"):
+        rebuilt = rebuilt + rgb(lobe + "Col") * (rgb(lobe + "Dir") + rgb(lobe + "Ind"))
+    assert mcdenoise.rel_mse(rebuilt, rgb("Combined")) <= 1e-6
+    assert not np.array_equal(rgb("DiffInd"), channels(raw, [f"{layer}DiffInd.{c}" for c in "RGB"]))
 
 
 def test_non_exr_output_is_reported(tmp_path):

@@ -137,6 +137,8 @@ def test_bad_sequence_usage(tmp_path):
 
 
 def test_bad_multipart_input(testrender_exr, tmp_path):
+    """Two parts holding the same layered channel names cannot be merged
+    into one channel list: refused, naming the file and the channel."""
     parts = tmp_path / "parts.exr"
     first = oiio.ImageBuf(str(testrender_exr))
     out = oiio.ImageOutput.create(str(parts))
@@ -149,5 +151,5 @@ def test_bad_multipart_input(testrender_exr, tmp_path):
     out.close()
     existing = os.listdir(tmp_path)
     r = run(parts, "--median", 3, "-o", tmp_path / "out.exr")
-    check_failure(r, 1, "parts.exr", "2 parts")
+    check_failure(r, 1, "parts.exr", "'N.X' twice")
     assert_no_outputs(tmp_path, existing)

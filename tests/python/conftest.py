@@ -26,13 +26,14 @@ def mcdtool(*args, cwd=None):
                           timeout=300)
 
 
-def render_sequence(directory, frames, res="64x64", spp=4, scene="cornell"):
-    """testrender frames 'shot.####.exr' in `directory`, seed = frame."""
+def render_sequence(directory, frames, res="64x64", spp=4, scene="cornell", passes=False):
+    """testrender frames 'shot.####.exr' in `directory`, seed = frame; with
+    `passes`, the light passes too."""
     directory.mkdir(parents=True, exist_ok=True)
     for frame in frames:
         subprocess.run([TESTRENDER, "--scene", scene, "--res", res, "--spp", str(spp), "--seed", str(frame),
-                        "--threads", "1", "-q", "-o", str(directory / f"shot.{frame:04d}.exr")], check=True,
-                       timeout=300)
+                        "--threads", "1", "-q", "-o", str(directory / f"shot.{frame:04d}.exr")]
+                       + (["--passes"] if passes else []), check=True, timeout=300)
     return directory / "shot.####.exr"
 
 

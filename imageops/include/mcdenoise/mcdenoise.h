@@ -35,6 +35,7 @@
 #include <mcdenoise/defaults.h>
 #include <mcdenoise/demodulate.h>
 #include <mcdenoise/denoise.h>
+#include <mcdenoise/denoise_layers.h>
 #include <mcdenoise/dof.h>
 #include <mcdenoise/features.h>
 #include <mcdenoise/fireflies.h>
