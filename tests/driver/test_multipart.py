@@ -84,6 +84,33 @@ def test_arnold_style_parts_are_read_and_written_as_parts(tmp_path):
     assert np.mean((total - beauty) ** 2 / (beauty ** 2 + 0.01)) <= 1e-6
 
 
+def test_renderman_style_parts_find_guides_and_lobes_across_parts(tmp_path):
+    """RenderMan-style parts (Ci, its mse and zfiltered denoise AOVs, the
+    four lighting lobes that sum to Ci): the variance and depth guides and
+    the lobes are found in their parts, and the denoised lobes sum to the
+    denoised Ci."""
+    beauty, ids, normal, depth = noisy_scene(seed=11)
+    shares = np.random.default_rng(11).dirichlet(np.ones(4), size=beauty.shape).astype(np.float32)
+    lobes = ["directDiffuse", "indirectDiffuse", "directSpecular", "indirectSpecular"]
+    alpha = np.ones(ids.shape + (1,), np.float32)
+    parts = [("Ci", list("RGBA"), np.concatenate([beauty, alpha], axis=2), "zip", "half")]
+    parts += [(lobe, list(RGB), beauty * shares[..., i], "zip", "float") for i, lobe in enumerate(lobes)]
+    parts += [("mse", list(RGB), np.full(beauty.shape, 0.04, np.float32), "zip", "half"),
+              ("zfiltered", ["Z"], depth[..., None], "zip", "float"),
+              ("N", list("XYZ"), normal, "zip", "half")]
+    src = write_parts(tmp_path / "renderman.exr", parts)
+    out = tmp_path / "clean.exr"
+    r = run(src, "--aovs", "auto", "--denoise", "-v", "-o", out)
+    assert r.code == 0, r
+    assert "mse.R,mse.G,mse.B" in r.out and "zfiltered.Z" in r.out and ",".join(lobes) in r.out, r.out
+    after = read_parts(out)
+    assert [p[0] for p in after] == [p[0] for p in parts]
+    total = sum(after[1 + i][2] for i in range(len(lobes)))
+    written = after[0][2][..., :3]
+    assert np.mean((total - written) ** 2 / (written ** 2 + 0.01)) <= 1e-6
+    assert written.std() < beauty.std()
+
+
 def test_nuke_style_parts_keep_their_layer_names(tmp_path):
     """Parts whose channels already carry the layer (diffuse.R) keep it."""
     beauty, ids, normal, depth = noisy_scene(seed=3)
