@@ -182,11 +182,13 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     const ImageBuf& before = inputs.beauty;
     ImageBuf current = before;
     OutputBatch batch(stats);
+    bool first_command = true;  // with --temporal, the --denoise that takes the neighbours (preflight.cpp)
     for (const Step& step : options.steps) {
         if (step.command) {
-            const bool across_frames = options.temporal > 0 && frame && std::string(step.command->name) == "denoise";
+            const bool across_frames = options.temporal > 0 && frame && first_command;
             current = run_command(step, current, guides, options.threads, options.verbose, stats,
                                   across_frames ? &loaded.neighbours : nullptr);
+            first_command = false;
             continue;
         }
         std::string path = path_of(step.output);
