@@ -31,18 +31,29 @@ void print_table(const testimg::ShotFigures& f)
         std::printf("| %s | %.5f |", testimg::method_names()[k].c_str(), m.rel_mse);
         for (double r : m.frame_rel_mse)
             std::printf(" %.4f", r);
-        std::printf(" | %.5f | %.5f | %.5f |\n", m.temporal, m.flicker, m.region);
+        // "-" where the shot does not measure it
+        const auto cell = [](bool measured, double v) {
+            if (measured)
+                std::printf(" %.5f |", v);
+            else
+                std::printf(" - |");
+        };
+        std::printf(" |");
+        cell(f.evaluated.size() > 1, m.temporal);
+        cell(m.flicker > 0.0, m.flicker);
+        cell(m.region > 0.0, m.region);
+        std::printf("\n");
     }
 }
 
-// The pictures side by side, sRGB, each scaled up `zoom` times.
-bool write_strip(const std::vector<ImageBuf>& pictures, const std::string& path, int zoom)
+// The `crop` of the pictures side by side, sRGB, scaled up `zoom` times.
+bool write_strip(const std::vector<ImageBuf>& pictures, const OIIO::ROI& crop,
+                 const std::string& path, int zoom)
 {
-    const OIIO::ROI one = pictures.front().roi();
-    ImageBuf strip(OIIO::ImageSpec(one.width() * int(pictures.size()), one.height(), 3,
+    ImageBuf strip(OIIO::ImageSpec(crop.width() * int(pictures.size()), crop.height(), 3,
                                    OIIO::TypeDesc::FLOAT));
     for (size_t i = 0; i < pictures.size(); ++i)
-        IBA::paste(strip, one.width() * int(i), 0, 0, 0, pictures[i], OIIO::ROI(one.xbegin, one.xend, one.ybegin, one.yend, 0, 1, 0, 3));
+        IBA::paste(strip, crop.width() * int(i), 0, 0, 0, IBA::cut(pictures[i], crop));
     const OIIO::ROI big(0, strip.spec().width * zoom, 0, strip.spec().height * zoom, 0, 1, 0, 3);
     ImageBuf out = IBA::resize(IBA::colorconvert(IBA::clamp(strip, 0.0f, 1.0f), "linear", "sRGB"),
                                "box", 0, big);
@@ -73,7 +84,9 @@ int main(int argc, char** argv)
         std::ofstream(out + "/temporal_pixel.csv") << testimg::static_pixel_csv(dir, 30, 60, 1);
         std::vector<ImageBuf> pictures = shots[2].pictures;
         pictures.erase(pictures.begin() + 4);  // the cross-frame denoise without motion
-        if (!write_strip(pictures, out + "/temporal_object.png", 2)) {
+        // the sphere at frame 2 and where it and its shadow were (96x96 shots)
+        const OIIO::ROI around_sphere(28, 92, 44, 92, 0, 1, 0, 3);
+        if (!write_strip(pictures, around_sphere, out + "/temporal_object.png", 3)) {
             std::fprintf(stderr, "temporal_table: could not write %s/temporal_object.png\n",
                          out.c_str());
             return 1;

@@ -1,7 +1,8 @@
 // test_temporal.cpp: the cross-frame denoise on small hand-checkable
 // sequences: no neighbours is `denoise`, a still noiseless shot stays
 // as it is, a shifted shot averages the pixels its motion points at (chained
-// over two frames), another surface in a neighbour gets no weight, and the
+// over two frames, a missing frame's vector repeated) or that the search
+// finds without motion, another surface in a neighbour gets no weight, and the
 // result is the same for any thread count, ROI split and neighbour order.
 #include <mcdenoise/mcdenoise.h>
 
@@ -140,6 +141,39 @@ TEST(Temporal, MotionPicksTheMovedPixels)
             }
 }
 
+TEST(Temporal, AMissingFrameRepeatsTheLastVector)
+{
+    // Two columns a frame; frame -1 is left out, so the centre's vector
+    // (X = -2) stands in for it: frame -2 is read 4 columns left.
+    const ShiftedFrame centre = shifted_frame(0, -2.0f, 0.0f, colour_a, unit_depth);
+    const ShiftedFrame prev2  = shifted_frame(-4, 0.0f, 0.0f, colour_b, unit_depth);
+    const ImageBuf out = mcd::denoise(centre.input(), { prev2.input() }, { -2 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float expected = x >= 4 ? (colour_a(x, y) + colour_b(x, y)) / 2 : colour_a(x, y);
+            EXPECT_NEAR(at(out, x, y, 0), expected, 1e-5f) << x << "," << y;
+        }
+}
+
+TEST(Temporal, WithoutMotionTheSearchFindsTheMovedPixels)
+{
+    // No motion guide: frame +1 shows the content 3 columns right, inside
+    // the wider search window of a frame taken as it is.
+    ShiftedFrame centre = shifted_frame(0, 0.0f, 0.0f, colour_a, unit_depth);
+    ShiftedFrame next   = shifted_frame(3, 0.0f, 0.0f, colour_b, unit_depth);
+    centre.motion.reset();
+    next.motion.reset();
+    const ImageBuf out = mcd::denoise(centre.input(), { next.input() }, { 1 });
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float expected =
+                x + 3 < width ? (colour_a(x, y) + colour_b(x, y)) / 2 : colour_a(x, y);
+            EXPECT_NEAR(at(out, x, y, 0), expected, 1e-5f) << x << "," << y;
+        }
+}
+
 TEST(Temporal, WrongMotionFindsNothing)
 {
     // The motion points the other way: the search window (radius 2) holds
@@ -193,6 +227,35 @@ TEST(Temporal, SameForAnyThreadsSplitAndOrder)
     const ImageBuf rest = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, bottom, 2);
     EXPECT_EQ(testimg::pixels(split, top), testimg::pixels(one, top));
     EXPECT_EQ(testimg::pixels(rest, bottom), testimg::pixels(one, bottom));
+}
+
+TEST(Temporal, DataWindowOriginAndInPlace)
+{
+    // A data window away from the origin: the same result as at the
+    // origin, moved; and `dst` may be the centre's beauty.
+    const auto frames_at = [](int x0, int y0, std::vector<ImageBuf>& b, std::vector<ImageBuf>& m) {
+        for (int f = 0; f < 3; ++f) {
+            b.push_back(testimg::random_image(width, height, 3, 50 + f, 0.0f, 1.0f,
+                                              TypeDesc::FLOAT, x0, y0));
+            m.push_back(testimg::random_image(width, height, 4, 60 + f, -1.5f, 1.5f,
+                                              TypeDesc::FLOAT, x0, y0));
+        }
+    };
+    std::vector<ImageBuf> b0, m0, b1, m1;
+    frames_at(0, 0, b0, m0);
+    frames_at(7, -5, b1, m1);
+    const auto input = [](std::vector<ImageBuf>& b, std::vector<ImageBuf>& m, int f) {
+        mcd::FrameInput in { &b[size_t(f)], {} };
+        in.guides.motion = &m[size_t(f)];
+        return in;
+    };
+    const ImageBuf at_origin = mcd::denoise(input(b0, m0, 1), { input(b0, m0, 0), input(b0, m0, 2) },
+                                            { -1, 1 });
+    ImageBuf& in_place = b1[1];
+    ASSERT_TRUE(mcd::denoise(in_place, input(b1, m1, 1), { input(b1, m1, 0), input(b1, m1, 2) },
+                             { -1, 1 }));
+    EXPECT_EQ(in_place.roi(), ROI(7, 7 + width, -5, -5 + height, 0, 1, 0, 3));
+    EXPECT_EQ(testimg::pixels(in_place), testimg::pixels(at_origin));
 }
 
 TEST(Temporal, BadNeighboursAreNamed)

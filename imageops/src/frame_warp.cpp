@@ -42,42 +42,54 @@ WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offs
     const bool still   = steps.empty() || !steps.front();
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            float px = float(x), py = float(y), vx = 0.0f, vy = 0.0f;
+            // The path from the pixel, as a displacement: the same at any
+            // data window origin.
+            float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
             int qx = x, qy = y;
             for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
                 if (steps[k])
                     step_vector(*steps[k], qx, qy, forward, vx, vy);
                 px += vx;
                 py += vy;
-                qx = nearest(px);
-                qy = nearest(py);
+                qx = x + nearest(px);
+                qy = y + nearest(py);
             }
             const bool ok = inside(source_dw, qx, qy);
             map.xs.at(x, y) = ok ? qx : WarpMap::no_source;
             map.ys.at(x, y) = ok ? qy : WarpMap::no_source;
-            map.dx.at(x, y) = px - float(qx);
-            map.dy.at(x, y) = py - float(qy);
+            map.dx.at(x, y) = px - float(qx - x);
+            map.dy.at(x, y) = py - float(qy - y);
         }
     });
     return map;
 }
 
+namespace {
+
+// Each of `values` (planes over `from`) at each pixel's nearest source,
+// over `region`; `fill` where there is none or it lies outside `from`.
 template<class T>
-Plane<T> warp_plane(const Plane<T>& src, const WarpMap& map, const ROI& region, T fill)
+std::vector<LargeVector<T>> nearest_channels(const std::vector<const LargeVector<T>*>& values,
+                                             const ROI& from, const WarpMap& map,
+                                             const ROI& region, T fill, int nthreads)
 {
-    Plane<T> out(region);
-    for (int y = region.ybegin; y < region.yend; ++y)
+    std::vector<LargeVector<T>> out;
+    for (size_t c = 0; c < values.size(); ++c)
+        out.emplace_back(plane_size(region));
+    parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = map.xs.offset(x, y);
+            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
             const int sx = map.xs.values[i], sy = map.ys.values[i];
-            out.at(x, y) = map.has_source(i) && inside(src.region, sx, sy) ? src.at(sx, sy)
-                                                                          : fill;
+            const bool ok = map.has_source(i) && inside(from, sx, sy);
+            const size_t at = ok ? pixel_offset(from, sx, sy) : 0;
+            for (size_t c = 0; c < values.size(); ++c)
+                out[c][o] = ok ? (*values[c])[at] : fill;
         }
+    });
     return out;
 }
 
-template Plane<float> warp_plane(const Plane<float>&, const WarpMap&, const ROI&, float);
-template Plane<Id> warp_plane(const Plane<Id>&, const WarpMap&, const ROI&, Id);
+}  // namespace
 
 namespace {
 
@@ -109,10 +121,12 @@ int bilinear_taps(const WarpMap& map, size_t i, const ROI& from, bool squared, s
 
 std::vector<LargeVector<float>> warp_channels(const std::vector<LargeVector<float>>& values,
                                               const ROI& from, const WarpMap& map,
-                                              const ROI& region, bool squared)
+                                              const ROI& region, bool squared, int nthreads)
 {
-    std::vector<LargeVector<float>> out(values.size(), LargeVector<float>(plane_size(region)));
-    for (int y = region.ybegin; y < region.yend; ++y)
+    std::vector<LargeVector<float>> out;
+    for (size_t c = 0; c < values.size(); ++c)
+        out.emplace_back(plane_size(region));
+    parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
             const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
             size_t at[4];
@@ -125,44 +139,43 @@ std::vector<LargeVector<float>> warp_channels(const std::vector<LargeVector<floa
                 out[c][o] = v;
             }
         }
+    });
     return out;
 }
 
 }  // namespace
 
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region,
-                          bool variance)
+                          bool variance, int nthreads)
 {
     Planes<float> out;
     out.region = region;
-    out.values = warp_channels(src.values, src.region, map, region, variance);
-    out.finite = warp_channels(src.finite, src.region, map, region, false);
+    out.values = warp_channels(src.values, src.region, map, region, variance, nthreads);
+    out.finite = warp_channels(src.finite, src.region, map, region, false, nthreads);
     return out;
 }
 
 ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const ROI& region,
-                         bool variance)
+                         bool variance, int nthreads)
 {
-    Planes<float> lum;
-    lum.region = src.luminance.region;
-    lum.values.push_back(src.luminance.values);
-    Plane<float> luminance(region);
-    luminance.values = std::move(warp_planes(lum, map, region, variance).values.front());
-    return { warp_planes(src.colour, map, region, variance), std::move(luminance) };
+    return { warp_planes(src.colour, map, region, variance, nthreads), Plane<float>() };
 }
 
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const ROI& region)
+FeatureField warp_features(const FeatureField& src, const WarpMap& map, const ROI& region,
+                           int nthreads)
 {
     FeatureField out;
+    std::vector<const LargeVector<float>*> dims;
+    for (const LargeVector<float>& dim : src.dims.values)
+        dims.push_back(&dim);
     out.dims.region = region;
-    for (const LargeVector<float>& dim : src.dims.values) {
-        Plane<float> plane;
-        plane.region = src.dims.region;
-        plane.values = dim;
-        out.dims.values.push_back(warp_plane(plane, map, region, 0.0f).values);
+    out.dims.values = nearest_channels(dims, src.dims.region, map, region, 0.0f, nthreads);
+    if (!src.ids.values.empty()) {
+        out.ids.region = region;
+        out.ids.values = std::move(nearest_channels<Id>({ &src.ids.values }, src.ids.region, map,
+                                                        region, no_guide_id, nthreads)
+                                       .front());
     }
-    if (!src.ids.values.empty())
-        out.ids = warp_plane(src.ids, map, region, no_guide_id);
     return out;
 }
 
@@ -190,23 +203,24 @@ std::vector<const GuideChannels*> motion_steps(
 {
     std::vector<const GuideChannels*> steps;
     const int sign = offset > 0 ? 1 : -1;
+    // The frame k steps away: the centre (motions[0]), or the neighbour at
+    // offset sign * k (motions[1 + its index]) when there is one.
     for (int k = 0; k < sign * offset; ++k) {
         const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
-        if (k == 0)
-            steps.push_back(motions.front().get());
-        else
-            steps.push_back(at == offsets.end() ? nullptr
-                                                : motions[1 + size_t(at - offsets.begin())].get());
+        const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size()
+                                                          : 1 + size_t(at - offsets.begin());
+        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
     }
     return steps;
 }
 
-Plane<float> source_mask(const WarpMap& map, const ROI& region)
+Plane<float> source_mask(const WarpMap& map, const ROI& region, int nthreads)
 {
     Plane<float> out(region);
-    for (int y = region.ybegin; y < region.yend; ++y)
+    parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x)
             out.at(x, y) = map.has_source(map.xs.offset(x, y)) ? 1.0f : 0.0f;
+    });
     return out;
 }
 

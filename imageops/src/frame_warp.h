@@ -53,29 +53,25 @@ std::vector<const GuideChannels*> motion_steps(
     const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
     int offset);
 
-/// The values of `src` at each pixel's source, over `region` (inside the
-/// map's region); `fill` where there is none or the source lies outside
-/// `src`'s region.
-template<class T>
-Plane<T> warp_plane(const Plane<T>& src, const WarpMap& map, const OIIO::ROI& region, T fill);
-
 /// Every channel of `src` (and its finite mask) sampled bilinearly where
 /// the motion leads (the taps inside `src`'s region, their weights
 /// normalised), 0 where there is no source. With `variance`, the variance
 /// of that sample instead: the taps' values times their squared weights.
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region,
-                          bool variance = false);
+                          bool variance, int nthreads);
 
-/// Colour planes and luminance carried by `map` over `region` as
-/// `warp_planes` carries them (with `variance`, as a variance).
+/// Colour planes carried by `map` over `region` as `warp_planes` carries
+/// them (with `variance`, as a variance); no luminance (the NL-means
+/// average does not read it).
 ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region,
-                         bool variance = false);
+                         bool variance, int nthreads);
 
-/// Feature dimensions and ids carried by `map` over `region`: no source
-/// gives an id equal to no other.
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const OIIO::ROI& region);
+/// Feature dimensions and ids carried by `map` over `region`, from the
+/// nearest source pixel: no source gives 0 and an id equal to no other.
+FeatureField warp_features(const FeatureField& src, const WarpMap& map, const OIIO::ROI& region,
+                           int nthreads);
 
 /// 1 where a pixel of `region` has a source, 0 where not.
-Plane<float> source_mask(const WarpMap& map, const OIIO::ROI& region);
+Plane<float> source_mask(const WarpMap& map, const OIIO::ROI& region, int nthreads);
 
 }  // namespace mcdenoise

@@ -76,10 +76,13 @@ inline int patch_count(int p, int d, int f, int lo, int hi)
     return b - a + 1;
 }
 
-// Add the weights of frame `q`'s window to rows [y0, y1), columns
-// [x0, x0 + n) of the ROI.
+// The weights of frame `q`'s window for rows [y0, y1), columns
+// [x0, x0 + n) of the ROI, offset by offset: `sink(y, w, dx, dy, i0, i1)`
+// takes the weights w[i], i in [i0, i1), of the pixels (x0 + i, y) for
+// their neighbours (x0 + i + dx, y + dy).
+template<class Sink>
 void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0, int n,
-                 std::vector<WeightedSums>& sums)
+                 Sink&& sink)
 {
     const ROI& dw     = in.dw;
     const int r = q.search_radius, f = in.f;
@@ -121,10 +124,9 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
                 if (y + dy < dw.ybegin || y + dy >= dw.yend || o.count() <= 0)
                     continue;
                 const int i0 = o.i0, i1 = o.i1;
-                WeightedSums& s = sums[size_t(y - y0)];
                 if (q.own && o.centre()) {
                     std::fill(w.begin() + i0, w.begin() + i1, 1.0f);
-                    s.add(w.data(), *q.values, x0 + dx, y + dy, i0, i1);
+                    sink(y, w.data(), dx, dy, i0, i1);
                     continue;
                 }
                 // Patch sums: down the rows, then along the columns, each
@@ -150,7 +152,7 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
                     for (int i = i0; i < i1; ++i)
                         w[i] *= u[i];
                 }
-                s.add(w.data(), *q.values, x0 + dx, y + dy, i0, i1);
+                sink(y, w.data(), dx, dy, i0, i1);
             }
         }
 }
@@ -162,7 +164,10 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPix
     for (int y = y0; y < y1; ++y)
         sums.emplace_back(in.roi.chbegin, in.roi.chend, n, in.frames.front().values->masked());
     for (const NlmFrame& q : in.frames)
-        frame_chunk(in, q, y0, y1, x0, n, sums);
+        frame_chunk(in, q, y0, y1, x0, n,
+                    [&](int y, const float* w, int dx, int dy, int i0, int i1) {
+                        sums[size_t(y - y0)].add(w, *q.values, x0 + dx, y + dy, i0, i1);
+                    });
     int64_t empty = 0;
     for (int y = y0; y < y1; ++y)
         empty += sums[size_t(y - y0)].write(result.pixel(x0, y), result.pixel_stride());
@@ -219,6 +224,29 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
                 nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, result);
+            });
+    });
+}
+
+void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceField& variance,
+                   const ROI& dw, int patch_radius, float strength, int nthreads,
+                   Plane<float>& w)
+{
+    const ROI region = w.region;
+    NlmFrame at_pixel      = q;
+    at_pixel.search_radius = 0;
+    const std::vector<NlmFrame> frames { at_pixel };
+    const NlmInputs in { frames, colour, variance, region, dw, patch_radius,
+                         strength * strength };
+    std::fill(w.values.begin(), w.values.end(), 0.0f);
+    OIIO::ImageBufAlgo::parallel_image(region, nthreads, [&](ROI strip) {
+        const FlushDenormals flush;
+        for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
+            for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
+                frame_chunk(in, at_pixel, y, std::min(strip.yend, y + chunk_rows), x0, n,
+                            [&](int row, const float* wr, int, int, int i0, int i1) {
+                                std::copy(wr + i0, wr + i1, w.from(x0 + i0, row));
+                            });
             });
     });
 }

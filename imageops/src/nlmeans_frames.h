@@ -31,24 +31,31 @@ struct NlmFrame {
     bool own;
 };
 
-/// The NL-means average of `roi` (channels of `frames`' values) over the
-/// windows of every frame in order, with patch radius `patch_radius` and
-/// `strength`: the patches of the filtered pixels are read from `colour`
-/// (over the ROI grown by the patch radius) with the variance `variance`,
-/// compared with each frame's own patches and variance. `dw` is the
-/// filtered frame's data window. Writes `dst` as `nlmeans` does, with
-/// `like` as the image the result is shaped after and `inputs` for in-place
-/// detection.
-/// `nlmeans_frames` into `result` (over `result.roi`, whose channels select
-/// the values'), `dw` the filtered frame's data window.
+/// The NL-means average over the windows of every frame in order, with
+/// patch radius `patch_radius` and `strength`, into `result` (over
+/// `result.roi`, whose channels select the values'): the patches of the
+/// filtered pixels are read from `colour` (over the ROI grown by the patch
+/// radius) with the variance `variance` and compared with each frame's own
+/// patches and variance; `dw` is the filtered frame's data window.
 void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, const OIIO::ROI& dw, int patch_radius,
                     float strength, int nthreads, ResultPixels& result);
 
+/// `nlmeans_frames` over `roi` into `dst`, as `nlmeans` writes it: `like`
+/// is the image the result is shaped after (its data window `dw`),
+/// `inputs` every image read (for in-place detection).
 bool nlmeans_frames(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& like,
                     std::initializer_list<const OIIO::ImageBuf*> inputs,
                     const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, int patch_radius, float strength,
                     const OIIO::ROI& roi, int nthreads);
+
+/// The weight `nlmeans_frames` gives frame `q`'s pixel at offset 0 from
+/// each pixel of `w.region` (inside `dw`): 1 for the filtered frame
+/// itself, else its patch against `colour`, `variance` and its features
+/// against `q.centre_features`, times `q.usable`; into `w`.
+void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceField& variance,
+                   const OIIO::ROI& dw, int patch_radius, float strength, int nthreads,
+                   Plane<float>& w);
 
 }  // namespace mcdenoise

@@ -27,11 +27,8 @@ namespace {
 
 constexpr const char* op_name = "denoise";
 
-// A neighbour frame prepared over its data window and carried into the
-// centre's regions.
+// A neighbour frame carried into the centre's regions.
 struct Neighbour {
-    DenoiseFrame frame;
-    FeatureInputs own;  // over its data window
     ColourField colour;
     VarianceField variance;
     FeatureField features;
@@ -110,17 +107,18 @@ bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& cen
     ROI dw    = n.beauty->roi();
     dw.chbegin = 0;
     dw.chend   = n.beauty->nchannels();
-    if (!prepare_denoise_frame(dst, *n.beauty, n.guides, dw, nthreads, out.frame)
-        || !load_feature_inputs(op_name, dst, out.frame.clamped, out.frame.guides,
-                                temporal_feature_sigmas, dw, dw, nthreads, out.own))
+    DenoiseFrame frame;
+    FeatureInputs own;
+    if (!prepare_denoise_frame(dst, *n.beauty, n.guides, dw, nthreads, frame)
+        || !load_feature_inputs(op_name, dst, frame.clamped, frame.guides,
+                                temporal_feature_sigmas, dw, dw, nthreads, own))
         return false;
     const ROI search = centre.values.region;
-    out.colour   = warp_colour(out.own.colour, map, centre.colour.region(), false);
-    out.variance = warp_colour(out.own.variance, map, centre.variance.region(), true);
-    out.features = warp_features(out.own.features, map, search);
-    out.values   = warp_planes(out.own.values, map, search, false);
-    out.usable   = source_mask(map, search);
-    out.own      = FeatureInputs();
+    out.colour   = warp_colour(own.colour, map, centre.colour.region(), false, nthreads);
+    out.variance = warp_colour(own.variance, map, centre.variance.region(), true, nthreads);
+    out.features = warp_features(own.features, map, search, nthreads);
+    out.values   = warp_planes(own.values, map, search, false, nthreads);
+    out.usable   = source_mask(map, search, nthreads);
     return true;
 }
 
@@ -133,6 +131,61 @@ void align_masks(std::vector<SumSource*> values)
     for (SumSource* v : values)
         if (any && !v->masked())
             v->finite = Planes<float>(v->region, v->nchannels(), 1.0f).values;
+}
+
+// Load every neighbour into the centre's regions (those of `fin`), in the
+// order of their offsets, so the sums do not depend on the order they are
+// listed in.
+bool load_neighbours(ImageBuf& dst, const FrameInput& centre,
+                     const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets,
+                     const FeatureInputs& fin, int nthreads,
+                     std::vector<std::unique_ptr<Neighbour>>& loaded)
+{
+    std::vector<std::unique_ptr<GuideChannels>> motions;
+    if (!load_motions(op_name, dst, centre, neighbours, nthreads, motions))
+        return false;
+    std::vector<size_t> order(neighbours.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
+    for (size_t i : order) {
+        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]),
+                                            offsets[i], fin.colour.region(),
+                                            neighbours[i].beauty->roi(), nthreads);
+        loaded.push_back(std::make_unique<Neighbour>());
+        if (!load_neighbour(dst, neighbours[i], fin, map, nthreads, *loaded.back()))
+            return false;
+    }
+    return true;
+}
+
+// The temporal guide, then the NL-means average of `roi` over the centre's
+// window (`fin`, prepared as `c`) and the neighbours' (`loaded`).
+bool average_frames(ImageBuf& dst, const FrameInput& centre, const DenoiseFrame& c,
+                    FeatureInputs& fin, const std::vector<std::unique_ptr<Neighbour>>& loaded,
+                    const ROI& roi, int nthreads)
+{
+    std::vector<SumSource*> values { &fin.values };
+    for (const auto& n : loaded)
+        values.push_back(&n->values);
+    align_masks(values);
+    const int radius = centre.guides.motion ? temporal_search_radius
+                                            : temporal_still_search_radius;
+    std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features, &fin.features,
+                                     &fin.values, nullptr, denoise_search_radius, true } };
+    for (const auto& n : loaded)
+        frames.push_back({ &n->colour, &n->variance, &n->features, &fin.features, &n->values,
+                           &n->usable, radius, false });
+    // The patches and features every candidate is compared with: the
+    // centre's, averaged over the frames that match them.
+    const ROI dw              = c.clamped.roi();
+    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(roi, denoise_patch_radius, dw),
+                                               dw, denoise_patch_radius, c.strength, nthreads);
+    for (NlmFrame& f : frames)
+        f.centre_features = &guide.features;
+    return nlmeans_frames(op_name, dst, c.clamped, { centre.beauty, &c.clamped }, frames,
+                          guide.colour, guide.variance, denoise_patch_radius, c.strength, roi,
+                          nthreads);
 }
 
 }  // namespace
@@ -159,45 +212,13 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
     const ROI dw      = c.clamped.roi();
     const ROI search  = grow_and_clip(roi, denoise_search_radius, dw);
     const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
-    std::vector<std::unique_ptr<GuideChannels>> motions;
     if (!load_feature_inputs(op_name, dst, c.clamped, c.guides, temporal_feature_sigmas, search,
-                             patches, nthreads, fin)
-        || !load_motions(op_name, dst, centre, neighbours, nthreads, motions))
+                             patches, nthreads, fin))
         return false;
-    // Neighbours in the order of their offsets, so the sums do not depend
-    // on the order they are listed in.
-    std::vector<size_t> order(neighbours.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
     std::vector<std::unique_ptr<Neighbour>> loaded;
-    std::vector<SumSource*> values { &fin.values };
-    for (size_t i : order) {
-        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]), offsets[i],
-                                            fin.colour.region(), neighbours[i].beauty->roi(),
-                                            nthreads);
-        loaded.push_back(std::make_unique<Neighbour>());
-        if (!load_neighbour(dst, neighbours[i], fin, map, nthreads, *loaded.back()))
-            return false;
-        values.push_back(&loaded.back()->values);
-    }
-    align_masks(values);
-    const int radius = centre.guides.motion ? temporal_search_radius
-                                            : temporal_still_search_radius;
-    std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features, &fin.features,
-                                     &fin.values, nullptr, denoise_search_radius, true } };
-    for (const auto& n : loaded)
-        frames.push_back({ &n->colour, &n->variance, &n->features, &fin.features, &n->values,
-                           &n->usable, radius, false });
-    // The patches and features every candidate is compared with: the
-    // centre's, averaged over the frames that match them.
-    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(roi, denoise_patch_radius, dw),
-                                               dw, denoise_patch_radius, c.strength, nthreads);
-    for (NlmFrame& f : frames)
-        f.centre_features = &guide.features;
-    if (!nlmeans_frames(op_name, dst, c.clamped, { centre.beauty, &c.clamped }, frames,
-                        guide.colour, guide.variance, denoise_patch_radius, c.strength, roi,
-                        nthreads))
+    if (!load_neighbours(dst, centre, neighbours, offsets, fin, nthreads, loaded))
+        return false;
+    if (!average_frames(dst, centre, c, fin, loaded, roi, nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
     return true;

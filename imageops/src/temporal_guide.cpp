@@ -1,5 +1,6 @@
 // temporal_guide.cpp: the weighted temporal mean of the centre frame's
-// colour and its variance, through one NL-means pass at offset 0.
+// colour and features and its variance, from each neighbour's weight at
+// offset 0.
 #include "temporal_guide.h"
 
 #include "window.h"
@@ -8,69 +9,58 @@ namespace mcdenoise {
 
 using OIIO::ROI;
 
-namespace {
-
-// Over `region`: the frame's colour channels, its variance channels,
-// `own` (1 for the centre, 0 for a neighbour) and its feature dimensions,
-// as sums read them.
-SumSource guide_values(const NlmFrame& frame, const ROI& region, float own)
-{
-    const int nc   = frame.colour->nchannels();
-    const int dims = frame.features->dims.nchannels();
-    SumSource out(region, 2 * nc + 1 + dims);
-    for (int y = region.ybegin; y < region.yend; ++y) {
-        const int x = region.xbegin, w = region.width();
-        for (int c = 0; c < nc; ++c) {
-            std::copy_n(frame.colour->colour.from(c, x, y), w, out.row(c, y));
-            std::copy_n(frame.variance->colour.from(c, x, y), w, out.row(nc + c, y));
-        }
-        std::fill_n(out.row(2 * nc, y), w, own);
-        for (int d = 0; d < dims; ++d)
-            std::copy_n(frame.features->dims.from(d, x, y), w, out.row(2 * nc + 1 + d, y));
-    }
-    return out;
-}
-
-}  // namespace
-
 TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& region,
                              const ROI& dw, int patch_radius, float strength, int nthreads)
 {
-    const int nc   = frames.front().colour->nchannels();
-    const int dims = frames.front().features->dims.nchannels();
+    const NlmFrame& centre = frames.front();
+    const int nc   = centre.colour->nchannels();
+    const int dims = centre.features->dims.nchannels();
     const auto lw  = luminance_weights(nc);
-    std::vector<SumSource> values;
-    for (const NlmFrame& f : frames)
-        values.push_back(guide_values(f, region, f.own ? 1.0f : 0.0f));
-    std::vector<NlmFrame> at_pixel = frames;
-    for (size_t i = 0; i < frames.size(); ++i) {
-        at_pixel[i].values        = &values[i];
-        at_pixel[i].search_radius = 0;
+    std::vector<Plane<float>> weights;
+    for (size_t k = 1; k < frames.size(); ++k) {
+        weights.emplace_back(region);
+        match_weights(frames[k], *centre.colour, *centre.variance, dw, patch_radius, strength,
+                      nthreads, weights.back());
     }
-    ResultPixels result;
-    ROI all    = region;
-    all.chbegin = 0;
-    all.chend   = 2 * nc + 1 + dims;
-    result.use_buffer(all);
-    nlmeans_frames(at_pixel, *frames.front().colour, *frames.front().variance, dw, patch_radius,
-                   strength, nthreads, result);
     TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, dims), IdPlane() } };
+    // Every frame's planes share the centre's regions: one offset each.
+    const auto& colour = centre.colour->colour;
+    const auto& var    = centre.variance->colour;
+    const auto& feat   = centre.features->dims;
+    const size_t nf    = frames.size();
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            const float* m = result.pixel(x, y);
-            const size_t i = g.colour.colour.offset(x, y);
+            const size_t i = g.colour.colour.offset(x, y), oc = colour.offset(x, y),
+                         ov = var.offset(x, y), of = feat.offset(x, y);
+            float total = 1.0f;
+            for (size_t k = 1; k < nf; ++k)
+                total += weights[k - 1].values[i];
+            // The weighted mean over the frames of plane p of `planes(f)`
+            // at `o`, each frame's weight to the power `power`.
+            const auto mean = [&](auto&& planes, size_t p, size_t o, int power) {
+                float sum = planes(frames[0]).values[p][o];
+                for (size_t k = 1; k < nf; ++k) {
+                    const float w = weights[k - 1].values[i];
+                    sum += (power == 2 ? w * w : w) * planes(frames[k]).values[p][o];
+                }
+                return power == 2 ? sum / (total * total) : sum / total;
+            };
+            const auto colours  = [](const NlmFrame& f) -> const auto& { return f.colour->colour; };
+            const auto variances = [](const NlmFrame& f) -> const auto& { return f.variance->colour; };
+            const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
             float lum = 0.0f, lum_var = 0.0f;
             for (int c = 0; c < nc; ++c) {
-                const float v = m[nc + c] * m[2 * nc];  // (sum w v / sum w) / sum w
-                g.colour.colour.values[size_t(c)][i]   = m[c];
+                const float u = mean(colours, size_t(c), oc, 1);
+                const float v = mean(variances, size_t(c), ov, 2);
+                g.colour.colour.values[size_t(c)][i]   = u;
                 g.variance.colour.values[size_t(c)][i] = v;
-                lum += lw[size_t(c)] * m[c];
+                lum += lw[size_t(c)] * u;
                 lum_var += lw[size_t(c)] * lw[size_t(c)] * v;
             }
             for (int d = 0; d < dims; ++d)
-                g.features.dims.values[size_t(d)][i] = m[2 * nc + 1 + d];
+                g.features.dims.values[size_t(d)][i] = mean(features, size_t(d), of, 1);
             g.colour.luminance.values[i]   = lum;
             g.variance.luminance.values[i] = lum_var;
         }

@@ -20,12 +20,10 @@ struct TemporalGuide {
 /// that pixel (offset 0, whatever their search radius), weighed as
 /// `nlmeans_frames` weighs them (patch radius `patch_radius`, `strength`):
 /// the centre 1, a neighbour by how well its patch and features match the
-/// centre's. The variance is that of the weighted mean, sum(w^2 v) / (sum
-/// w)^2, taken as (sum(w v) / sum w) / sum w (exact for weights 0 and 1,
-/// larger otherwise). The features are the same weighted mean of the
-/// frames' feature dimensions (`features`, as the frames' `features`
-/// scale them). Every frame's colour, variance and features must cover
-/// `region`.
+/// centre's (`match_weights`). The variance is that of the weighted mean,
+/// sum(w^2 v) / (sum w)^2; the features the same weighted mean of the
+/// frames' feature dimensions (`features`, as the frames scale them).
+/// Every frame's colour, variance and features must cover `region`.
 TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const OIIO::ROI& region,
                              const OIIO::ROI& dw, int patch_radius, float strength,
                              int nthreads);
