@@ -203,11 +203,13 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     if (options.verbose && !options.light_passes.empty())
         report_light_passes(input_path, layers);
     OutputBatch batch(stats);
+    bool first_command = true;  // with --temporal, the --denoise that takes the neighbours (preflight.cpp)
     for (const Step& step : options.steps) {
         if (step.command) {
-            const bool across_frames = options.temporal > 0 && frame && std::string(step.command->name) == "denoise";
+            const bool across_frames = options.temporal > 0 && frame && first_command;
             current = run_command(step, current, guides, layers, options.threads, options.verbose, stats,
                                   across_frames ? &loaded.neighbours : nullptr);
+            first_command = false;
             continue;
         }
         std::string path = path_of(step.output);
