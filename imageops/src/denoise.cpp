@@ -1,9 +1,9 @@
 // denoise.cpp: the one-call denoiser, a fixed chain of this library's
 // filters whose strength follows from the guides it is given.
 #include <mcdenoise/denoise.h>
-#include <mcdenoise/fireflies.h>
 #include <mcdenoise/nlmeans.h>
 
+#include "energy_outliers.h"
 #include "feature_field.h"
 #include "operation.h"
 #include "window.h"
@@ -121,18 +121,19 @@ bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI ro
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_feature_guides(op_name, dst, used, roi)
         || !check_halves(dst, beauty, guides, roi))
         return false;
-    // Everything the nlmeans windows and patches read, and the two 3x3
-    // windows of an estimated variance, so the result does not depend on
-    // the ROI.
-    ROI region    = grow_and_clip(roi, search_radius + patch_radius + 2, beauty.roi());
+    // Everything the nlmeans windows and patches read, the two 3x3 windows
+    // of an estimated variance and the excess spread onto the ROI, so the
+    // result does not depend on the ROI.
+    ROI region = grow_and_clip(roi, std::max(search_radius + patch_radius + 2,
+                                             excess_spread_radius),
+                               beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
     ImageBuf clamped, variance;
-    if (!clamp_fireflies(clamped, beauty, used, firefly_factor, firefly_radius, region,
-                         nthreads)) {
-        dst.errorfmt("{}: {}", op_name, clamped.geterror());
+    Planes<float> excess;
+    if (!split_outliers(op_name, dst, beauty, guides, firefly_factor, firefly_radius, region,
+                        nthreads, clamped, excess))
         return false;
-    }
     ROI colour   = region;
     colour.chend = colour_channels(beauty.nchannels());
     const bool measured = guides.variance || guides.half_a;
@@ -146,6 +147,12 @@ bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI ro
     if (!nlmeans(dst, clamped, used, search_radius, patch_radius, strength,
                  denoise_feature_sigmas, roi, nthreads))
         return false;
+    const ImageBuf spread = spread_excess(excess, roi, beauty.roi(), beauty.nchannels(),
+                                          nthreads);
+    if (!OIIO::ImageBufAlgo::add(dst, dst, spread, roi, nthreads)) {
+        dst.errorfmt("{}: could not add the spread excess", op_name);
+        return false;
+    }
     dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
     return true;
 }

@@ -1,0 +1,188 @@
+// energy_outliers.cpp: `denoise`'s energy-keeping outlier step: the firefly
+// excess taken out of the beauty, and spread back with a normalised Gaussian.
+#include "energy_outliers.h"
+
+#include <mcdenoise/fireflies.h>
+
+#include "feature_field.h"
+#include "window.h"
+
+#include <cmath>
+#include <vector>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+/// The measured variance of the luminance over `region` (the variance
+/// guide's, else the halves' `(a - b)^2 / 4` per pixel), or an empty plane
+/// when neither is given.
+bool measured_luminance_variance(const char* op, ImageBuf& dst, const Guides& guides, int nc,
+                                 const ROI& region, int nthreads, Plane<float>& out)
+{
+    out = Plane<float>();
+    GuideChannels a, b;
+    if (guides.variance) {
+        if (!load_guide_channels(op, dst, *guides.variance, region, nthreads, a))
+            return false;
+    } else if (guides.half_a && guides.half_b) {
+        if (!load_guide_channels(op, dst, *guides.half_a, region, nthreads, a)
+            || !load_guide_channels(op, dst, *guides.half_b, region, nthreads, b))
+            return false;
+    } else {
+        return true;
+    }
+    const auto lw = luminance_weights(nc);
+    out           = Plane<float>(region);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const size_t i = out.offset(x, y);
+            float v        = 0.0f;
+            for (int c = 0; c < nc; ++c) {
+                const size_t k = size_t(std::min(c, a.nchannels() - 1));
+                const float d  = b.nchannels() ? 0.5f * (a.values[k][i] - b.values[k][i])
+                                               : 0.0f;
+                const float vc = b.nchannels() ? d * d : std::max(0.0f, a.values[k][i]);
+                v += lw[size_t(c)] * lw[size_t(c)] * vc;
+            }
+            out.values[i] = v;
+        }
+    });
+    return true;
+}
+
+/// Rec. 709 (or mean) luminance of the first `nc` channels of `v`,
+/// non-finite values as 0.
+float luminance(const float* v, int nc)
+{
+    const auto lw = luminance_weights(nc);
+    float lum     = 0.0f;
+    for (int c = 0; c < nc; ++c)
+        lum += std::isfinite(v[c]) ? lw[size_t(c)] * v[c] : 0.0f;
+    return lum;
+}
+
+/// The Gaussian of `excess_spread_sigma` at offsets -radius..radius.
+std::vector<float> spread_kernel()
+{
+    std::vector<float> g(size_t(2 * excess_spread_radius + 1));
+    const double s2 = 2.0 * double(excess_spread_sigma) * double(excess_spread_sigma);
+    for (int t = -excess_spread_radius; t <= excess_spread_radius; ++t)
+        g[size_t(t + excess_spread_radius)] = float(std::exp(-double(t) * t / s2));
+    return g;
+}
+
+/// 1 / (the sum of g over the pixels of [lo, hi) around each q in [a, b)).
+std::vector<float> inverse_coverage(const std::vector<float>& g, int a, int b, int lo, int hi)
+{
+    std::vector<float> inv(size_t(b - a));
+    for (int q = a; q < b; ++q) {
+        const Span s = clip_window(q, excess_spread_radius, lo, hi);
+        double sum   = 0.0;
+        for (int p = s.begin; p < s.end; ++p)
+            sum += g[size_t(p - q + excess_spread_radius)];
+        inv[size_t(q - a)] = float(1.0 / sum);
+    }
+    return inv;
+}
+
+}  // namespace
+
+bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+                    float factor, int radius, const ROI& region, int nthreads, ImageBuf& kept,
+                    Planes<float>& excess)
+{
+    const int nc = colour_channels(beauty.nchannels());
+    Plane<float> noise;
+    if (!measured_luminance_variance(op, dst, guides, nc, region, nthreads, noise))
+        return false;
+    if (!clamp_fireflies(kept, beauty, {}, factor, radius, region, nthreads)) {
+        dst.errorfmt("{}: {}", op, kept.geterror());
+        return false;
+    }
+    PixelBlock block;
+    if (!read_beauty(op, dst, beauty, region, block))
+        return false;
+    excess = Planes<float>(region, nc, 0.0f);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const float* in = block.pixel(x, y);
+            float* out      = static_cast<float*>(kept.pixeladdr(x, y));
+            const float lum = luminance(in, nc);
+            const float cut = lum - luminance(out, nc);
+            if (!(cut > 0.0f))
+                continue;
+            const size_t i = excess.offset(x, y);
+            if (!noise.values.empty()
+                && cut > consistent_excess_sigmas * std::sqrt(noise.values[i])) {
+                std::copy_n(in, nc, out);
+                continue;
+            }
+            for (int c = 0; c < nc; ++c)
+                if (std::isfinite(in[c]))
+                    excess.values[size_t(c)][i] = in[c] - out[c];
+        }
+    });
+    return true;
+}
+
+ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+                       int nchannels, int nthreads)
+{
+    const std::vector<float> g = spread_kernel();
+    const ROI& reg             = excess.region;
+    const int nc               = excess.nchannels();
+    const std::vector<float> inv_x = inverse_coverage(g, reg.xbegin, reg.xend,
+                                                      data_window.xbegin, data_window.xend);
+    const std::vector<float> inv_y = inverse_coverage(g, reg.ybegin, reg.yend,
+                                                      data_window.ybegin, data_window.yend);
+    // Along the rows: h(x, y) = sum_t g(t) e(x + t, y) / nx(x + t), for the
+    // ROI's columns and every row of the region.
+    ROI rows    = reg;
+    rows.xbegin = roi.xbegin;
+    rows.xend   = roi.xend;
+    Planes<float> h(rows, nc, 0.0f);
+    parallel_rows(rows, nthreads, [&](int y) {
+        for (int c = 0; c < nc; ++c) {
+            const float* e = excess.row(c, y);
+            float* out     = h.row(c, y);
+            for (int qx = reg.xbegin; qx < reg.xend; ++qx) {
+                const float v = e[qx - reg.xbegin];
+                if (v == 0.0f)
+                    continue;
+                const float w   = v * inv_x[size_t(qx - reg.xbegin)];
+                const Span span = clip_window(qx, excess_spread_radius, roi.xbegin, roi.xend);
+                for (int x = span.begin; x < span.end; ++x)
+                    out[x - roi.xbegin] += w * g[size_t(x - qx + excess_spread_radius)];
+            }
+        }
+    });
+    // Down the columns, into the colour channels of the result.
+    ROI full    = roi;
+    full.chbegin = 0;
+    full.chend   = nchannels;
+    ImageBuf spread(OIIO::ImageSpec(full, OIIO::TypeDesc::FLOAT));
+    OIIO::ImageBufAlgo::zero(spread);
+    parallel_rows(roi, nthreads, [&](int y) {
+        const Span span = clip_window(y, excess_spread_radius, reg.ybegin, reg.yend);
+        std::vector<float> sum(size_t(roi.width()));
+        for (int c = 0; c < nc; ++c) {
+            std::fill(sum.begin(), sum.end(), 0.0f);
+            for (int qy = span.begin; qy < span.end; ++qy) {
+                const float w = g[size_t(y - qy + excess_spread_radius)]
+                                * inv_y[size_t(qy - reg.ybegin)];
+                const float* in = h.row(c, qy);
+                for (size_t i = 0; i < sum.size(); ++i)
+                    sum[i] += w * in[i];
+            }
+            for (int x = roi.xbegin; x < roi.xend; ++x)
+                static_cast<float*>(spread.pixeladdr(x, y))[c] = sum[size_t(x - roi.xbegin)];
+        }
+    });
+    return spread;
+}
+
+}  // namespace mcdenoise

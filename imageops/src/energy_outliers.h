@@ -1,0 +1,45 @@
+// energy_outliers.h: `denoise`'s outlier step, which keeps energy: the part
+// of a firefly above `clamp_fireflies`' bound is taken out of the beauty
+// before anything is averaged and spread back over a wide neighbourhood
+// afterwards, so the frame keeps its energy and a firefly never becomes a
+// blotch.
+#pragma once
+
+#include <mcdenoise/features.h>
+
+#include "plane.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+namespace mcdenoise {
+
+/// Standard deviation, in pixels, of the Gaussian the excess is spread with.
+constexpr float excess_spread_sigma = 10.0f;
+/// Radius of that Gaussian (3 sigma): the excess of a pixel reaches this far.
+constexpr int excess_spread_radius = 30;
+/// A pixel above the firefly bound is kept whole when its excess exceeds
+/// this many standard deviations of its measured noise: a highlight the
+/// samples agree on, not a firefly.
+constexpr float consistent_excess_sigmas = 2.0f;
+
+/// Split `beauty` over `region` (inside its data window, all channels) into
+/// `kept`, `clamp_fireflies(beauty, factor, radius)` except where the excess
+/// over the bound is consistent with the pixel's measured noise (the
+/// `variance` guide, else `(half_a - half_b)^2 / 4`; with neither every
+/// clamped pixel counts as a firefly), and `excess = beauty - kept` per
+/// colour channel (0 where a value is not finite), planes over `region`.
+/// On failure sets `dst`'s error prefixed with `op`.
+bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                    const Guides& guides, float factor, int radius, const OIIO::ROI& region,
+                    int nthreads, OIIO::ImageBuf& kept, Planes<float>& excess);
+
+/// The excess spread over `roi`: a float image over `roi` with `nchannels`
+/// channels, the colour channels holding `sum_q excess(q) g(p - q) / n(q)`
+/// (g: the Gaussian of `excess_spread_sigma`; n(q): the sum of g over the
+/// pixels of `data_window`, so each pixel's excess is given out whole), the
+/// others 0. `excess` must cover `roi` grown by `excess_spread_radius`
+/// (clipped to `data_window`).
+OIIO::ImageBuf spread_excess(const Planes<float>& excess, const OIIO::ROI& roi,
+                             const OIIO::ROI& data_window, int nchannels, int nthreads);
+
+}  // namespace mcdenoise
