@@ -118,10 +118,8 @@ SplitResult split(const ImageBuf& beauty, const ImageBuf* variance)
 {
     SplitResult r;
     ImageBuf dst;
-    mcdenoise::Guides g;
-    g.variance = variance;
-    EXPECT_TRUE(mcdenoise::split_outliers("test", dst, beauty, g, 2.0f, 2, beauty.roi(), 1,
-                                          r.kept, r.excess))
+    EXPECT_TRUE(mcdenoise::split_outliers("test", dst, beauty, variance, 2.0f, 2, beauty.roi(),
+                                          1, r.kept, r.excess))
         << dst.geterror();
     return r;
 }

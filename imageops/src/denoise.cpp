@@ -122,24 +122,28 @@ bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI ro
         || !check_halves(dst, beauty, guides, roi))
         return false;
     // Everything the nlmeans windows and patches read, the two 3x3 windows
-    // of an estimated variance and the excess spread onto the ROI, so the
-    // result does not depend on the ROI.
-    ROI region = grow_and_clip(roi, std::max(search_radius + patch_radius + 2,
-                                             excess_spread_radius),
+    // of an estimated variance, and the excess spread onto the ROI with the
+    // 3x3 windows of the variance that judges it, so the result does not
+    // depend on the ROI.
+    ROI region = grow_and_clip(roi, std::max(search_radius + patch_radius, excess_spread_radius) + 2,
                                beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
-    ImageBuf clamped, variance;
-    Planes<float> excess;
-    if (!split_outliers(op_name, dst, beauty, guides, firefly_factor, firefly_radius, region,
-                        nthreads, clamped, excess))
-        return false;
     ROI colour   = region;
     colour.chend = colour_channels(beauty.nchannels());
-    const bool measured = guides.variance || guides.half_a;
-    if (!guides.variance) {
-        if (guides.half_a ? !variance_from_halves(dst, guides, colour, nthreads, variance)
-                          : !estimated_variance(dst, clamped, region, nthreads, variance))
+    ImageBuf clamped, variance;
+    if (!guides.variance && guides.half_a) {
+        if (!variance_from_halves(dst, guides, colour, nthreads, variance))
+            return false;
+        used.variance = &variance;
+    }
+    Planes<float> excess;
+    if (!split_outliers(op_name, dst, beauty, used.variance, firefly_factor, firefly_radius,
+                        region, nthreads, clamped, excess))
+        return false;
+    const bool measured = used.variance != nullptr;
+    if (!measured) {
+        if (!estimated_variance(dst, clamped, region, nthreads, variance))
             return false;
         used.variance = &variance;
     }

@@ -17,24 +17,17 @@ using OIIO::ROI;
 
 namespace {
 
-/// The measured variance of the luminance over `region` (the variance
-/// guide's, else the halves' `(a - b)^2 / 4` per pixel), or an empty plane
-/// when neither is given.
-bool measured_luminance_variance(const char* op, ImageBuf& dst, const Guides& guides, int nc,
-                                 const ROI& region, int nthreads, Plane<float>& out)
+/// The luminance variance over `region` of `variance` (a variance guide),
+/// or an empty plane without one.
+bool luminance_variance(const char* op, ImageBuf& dst, const ImageBuf* variance, int nc,
+                        const ROI& region, int nthreads, Plane<float>& out)
 {
     out = Plane<float>();
-    GuideChannels a, b;
-    if (guides.variance) {
-        if (!load_guide_channels(op, dst, *guides.variance, region, nthreads, a))
-            return false;
-    } else if (guides.half_a && guides.half_b) {
-        if (!load_guide_channels(op, dst, *guides.half_a, region, nthreads, a)
-            || !load_guide_channels(op, dst, *guides.half_b, region, nthreads, b))
-            return false;
-    } else {
+    GuideChannels given;
+    if (!variance)
         return true;
-    }
+    if (!load_guide_channels(op, dst, *variance, region, nthreads, given))
+        return false;
     const auto lw = luminance_weights(nc);
     out           = Plane<float>(region);
     parallel_rows(region, nthreads, [&](int y) {
@@ -42,11 +35,8 @@ bool measured_luminance_variance(const char* op, ImageBuf& dst, const Guides& gu
             const size_t i = out.offset(x, y);
             float v        = 0.0f;
             for (int c = 0; c < nc; ++c) {
-                const size_t k = size_t(std::min(c, a.nchannels() - 1));
-                const float d  = b.nchannels() ? 0.5f * (a.values[k][i] - b.values[k][i])
-                                               : 0.0f;
-                const float vc = b.nchannels() ? d * d : std::max(0.0f, a.values[k][i]);
-                v += lw[size_t(c)] * lw[size_t(c)] * vc;
+                const size_t k = size_t(std::min(c, given.nchannels() - 1));
+                v += lw[size_t(c)] * lw[size_t(c)] * std::max(0.0f, given.values[k][i]);
             }
             out.values[i] = v;
         }
@@ -91,13 +81,13 @@ std::vector<float> inverse_coverage(const std::vector<float>& g, int a, int b, i
 
 }  // namespace
 
-bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
-                    float factor, int radius, const ROI& region, int nthreads, ImageBuf& kept,
-                    Planes<float>& excess)
+bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty,
+                    const ImageBuf* variance, float factor, int radius, const ROI& region,
+                    int nthreads, ImageBuf& kept, Planes<float>& excess)
 {
     const int nc = colour_channels(beauty.nchannels());
     Plane<float> noise;
-    if (!measured_luminance_variance(op, dst, guides, nc, region, nthreads, noise))
+    if (!luminance_variance(op, dst, variance, nc, region, nthreads, noise))
         return false;
     if (!clamp_fireflies(kept, beauty, {}, factor, radius, region, nthreads)) {
         dst.errorfmt("{}: {}", op, kept.geterror());

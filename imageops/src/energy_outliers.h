@@ -5,8 +5,6 @@
 // blotch.
 #pragma once
 
-#include <mcdenoise/features.h>
-
 #include "plane.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -23,15 +21,17 @@ constexpr int excess_spread_radius = 30;
 constexpr float consistent_excess_sigmas = 2.0f;
 
 /// Split `beauty` over `region` (inside its data window, all channels) into
-/// `kept`, `clamp_fireflies(beauty, factor, radius)` except where the excess
-/// over the bound is consistent with the pixel's measured noise (the
-/// `variance` guide, else `(half_a - half_b)^2 / 4`; with neither every
-/// clamped pixel counts as a firefly), and `excess = beauty - kept` per
-/// colour channel (0 where a value is not finite), planes over `region`.
-/// On failure sets `dst`'s error prefixed with `op`.
+/// `kept`, `clamp_fireflies(beauty, factor, radius)` except where the
+/// luminance excess over the bound exceeds `consistent_excess_sigmas`
+/// standard deviations of the pixel's measured noise (`variance`, a
+/// variance guide as features.h reads it; without it every clamped pixel
+/// counts as a firefly), and `excess = beauty - kept` per colour channel
+/// (0 where a value is not finite), planes over `region`. On failure sets
+/// `dst`'s error prefixed with `op`.
 bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
-                    const Guides& guides, float factor, int radius, const OIIO::ROI& region,
-                    int nthreads, OIIO::ImageBuf& kept, Planes<float>& excess);
+                    const OIIO::ImageBuf* variance, float factor, int radius,
+                    const OIIO::ROI& region, int nthreads, OIIO::ImageBuf& kept,
+                    Planes<float>& excess);
 
 /// The excess spread over `roi`: a float image over `roi` with `nchannels`
 /// channels, the colour channels holding `sum_q excess(q) g(p - q) / n(q)`
