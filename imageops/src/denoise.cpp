@@ -28,17 +28,17 @@ constexpr float firefly_factor    = 2.0f;
 constexpr int firefly_radius      = 2;
 
 /// The variance of the full estimate from two independent halves, over
-/// `region`: the 3x3 mean of (half_a - half_b)^2 / 4 per colour channel.
+/// `region`: per colour channel, `pixel` = (half_a - half_b)^2 / 4 and its
+/// 3x3 mean `smooth`.
 bool variance_from_halves(ImageBuf& dst, const Guides& guides, const ROI& region,
-                          int nthreads, ImageBuf& variance)
+                          int nthreads, ImageBuf& pixel, ImageBuf& smooth)
 {
-    ImageBuf diff;
-    if (!OIIO::ImageBufAlgo::sub(diff, *guides.half_a, *guides.half_b, region, nthreads)
-        || !OIIO::ImageBufAlgo::mul(diff, diff, diff, region, nthreads)
-        || !OIIO::ImageBufAlgo::mul(diff, diff, 0.25f, region, nthreads)
-        || !mean(variance, diff, 3, region, nthreads)) {
+    if (!OIIO::ImageBufAlgo::sub(pixel, *guides.half_a, *guides.half_b, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(pixel, pixel, pixel, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(pixel, pixel, 0.25f, region, nthreads)
+        || !mean(smooth, pixel, 3, region, nthreads)) {
         dst.errorfmt("{}: variance from half_a, half_b: {}", op_name,
-                     variance.has_error() ? variance.geterror() : diff.geterror());
+                     smooth.has_error() ? smooth.geterror() : pixel.geterror());
         return false;
     }
     return true;
@@ -131,14 +131,18 @@ bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI ro
     region.chend   = beauty.nchannels();
     ROI colour   = region;
     colour.chend = colour_channels(beauty.nchannels());
-    ImageBuf clamped, variance;
+    // The outlier test reads the noise of the pixel itself: a firefly in
+    // one half shows in its own (a - b)^2 / 4, but a 3x3 mean dilutes it.
+    ImageBuf clamped, variance, pixel_variance;
+    const ImageBuf* test_variance = guides.variance;
     if (!guides.variance && guides.half_a) {
-        if (!variance_from_halves(dst, guides, colour, nthreads, variance))
+        if (!variance_from_halves(dst, guides, colour, nthreads, pixel_variance, variance))
             return false;
         used.variance = &variance;
+        test_variance = &pixel_variance;
     }
     Planes<float> excess;
-    if (!split_outliers(op_name, dst, beauty, used.variance, firefly_factor, firefly_radius,
+    if (!split_outliers(op_name, dst, beauty, test_variance, firefly_factor, firefly_radius,
                         region, nthreads, clamped, excess))
         return false;
     const bool measured = used.variance != nullptr;
