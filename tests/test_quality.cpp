@@ -247,7 +247,7 @@ INSTANTIATE_TEST_SUITE_P(RefSet, DenoiseEnergy,
 class DenoiseOnEveryScene : public ::testing::TestWithParam<const char*> {};
 
 // Where the input is already good the filter must not make it worse:
-// measured denoise / raw from 0.14 (mirrors, 64 spp) to 0.86 (textured,
+// measured denoise / raw from 0.10 (cornell, 64 spp) to 0.86 (textured,
 // 256 spp).
 TEST_P(DenoiseOnEveryScene, IsNeverWorseThanItsInputAt64And256Spp)
 {
@@ -259,7 +259,7 @@ TEST_P(DenoiseOnEveryScene, IsNeverWorseThanItsInputAt64And256Spp)
     }
 }
 
-// At 16 spp below the raw 64-spp render on 7 of 8 scenes (measured 0.06 to
+// At 16 spp below the raw 64-spp render on 7 of 8 scenes (measured 0.09 to
 // 0.72 of it); textured is 2.0x (sub-pixel texture, docs/denoise.md).
 TEST_P(DenoiseOnEveryScene, BeatsRaw64SppAt16SppOutsideTextured)
 {
