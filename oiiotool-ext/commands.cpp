@@ -229,8 +229,10 @@ const std::vector<Command>& command_table()
           },
           feature_and_variance_roles },
         { "denoise", "denoise", "denoise.h", {}, {},
-          "The one-call denoiser: clamps fireflies, then non-local means with the variance (from the "
-          "variance guide, the halves, or estimated) and the feature weight of every guide present.",
+          "The one-call denoiser: takes the firefly excess out, runs non-local means with the "
+          "variance (from the variance guide, the halves, or estimated) and the feature weight of "
+          "every guide present, and spreads the excess back over its neighbourhood, so the frame "
+          "keeps its energy.",
           "mcdtool render.exr --denoise -o clean.exr",
           denoise_call, denoise_roles, true },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},

@@ -1,10 +1,10 @@
 // denoise.cpp: the one-call denoiser, a fixed chain of this library's
 // filters whose strength follows from the guides it is given.
 #include <mcdenoise/denoise.h>
-#include <mcdenoise/fireflies.h>
 #include <mcdenoise/nlmeans.h>
 
 #include "denoise_frame.h"
+#include "energy_outliers.h"
 #include "feature_field.h"
 #include "layer_channels.h"
 #include "operation.h"
@@ -28,17 +28,17 @@ constexpr float firefly_factor    = 2.0f;
 constexpr int firefly_radius      = 2;
 
 /// The variance of the full estimate from two independent halves, over
-/// `region`: the 3x3 mean of (half_a - half_b)^2 / 4 per colour channel.
+/// `region`: per colour channel, `pixel` = (half_a - half_b)^2 / 4 and its
+/// 3x3 mean `smooth`.
 bool variance_from_halves(ImageBuf& dst, const Guides& guides, const ROI& region,
-                          int nthreads, ImageBuf& variance)
+                          int nthreads, ImageBuf& pixel, ImageBuf& smooth)
 {
-    ImageBuf diff;
-    if (!OIIO::ImageBufAlgo::sub(diff, *guides.half_a, *guides.half_b, region, nthreads)
-        || !OIIO::ImageBufAlgo::mul(diff, diff, diff, region, nthreads)
-        || !OIIO::ImageBufAlgo::mul(diff, diff, 0.25f, region, nthreads)
-        || !mean(variance, diff, 3, region, nthreads)) {
+    if (!OIIO::ImageBufAlgo::sub(pixel, *guides.half_a, *guides.half_b, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(pixel, pixel, pixel, region, nthreads)
+        || !OIIO::ImageBufAlgo::mul(pixel, pixel, 0.25f, region, nthreads)
+        || !mean(smooth, pixel, 3, region, nthreads)) {
         dst.errorfmt("{}: variance from half_a, half_b: {}", op_name,
-                     variance.has_error() ? variance.geterror() : diff.geterror());
+                     smooth.has_error() ? smooth.geterror() : pixel.geterror());
         return false;
     }
     return true;
@@ -124,11 +124,13 @@ bool check_denoise_guides(const char* op, ImageBuf& dst, const ImageBuf& beauty,
 
 ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
 {
-    // Everything the nlmeans windows and patches read, and the two 3x3
-    // windows of an estimated variance, so the result does not depend on
-    // the ROI.
-    ROI region    = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius + 2,
-                                  beauty.roi());
+    // Everything the nlmeans windows and patches read, the two 3x3 windows
+    // of an estimated variance, and the excess spread onto the ROI with the
+    // 3x3 windows of the variance that judges it, so the result does not
+    // depend on the ROI.
+    ROI region = grow_and_clip(
+        roi, std::max(denoise_search_radius + denoise_patch_radius, excess_spread_radius) + 2,
+        beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
     return region;
@@ -140,18 +142,24 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begi
 {
     frame.guides           = guides;  // the object id is not read (see denoise.h)
     frame.guides.object_id = nullptr;
-    if (!clamp_fireflies_layers(frame.clamped, beauty, layer_begin, frame.guides,
-                                firefly_factor, firefly_radius, region, nthreads)) {
-        dst.errorfmt("{}: {}", op_name, frame.clamped.geterror());
-        return false;
-    }
     ROI colour   = region;
     colour.chend = colour_channels(beauty.nchannels());
-    const bool measured = guides.variance || guides.half_a;
-    if (!guides.variance) {
-        if (guides.half_a
-                ? !variance_from_halves(dst, guides, colour, nthreads, frame.variance)
-                : !estimated_variance(dst, frame.clamped, region, nthreads, frame.variance))
+    // The outlier test reads the noise of the pixel itself: a firefly in
+    // one half shows in its own (a - b)^2 / 4, but a 3x3 mean dilutes it.
+    ImageBuf pixel_variance;
+    const ImageBuf* test_variance = guides.variance;
+    if (!guides.variance && guides.half_a) {
+        if (!variance_from_halves(dst, guides, colour, nthreads, pixel_variance, frame.variance))
+            return false;
+        frame.guides.variance = &frame.variance;
+        test_variance         = &pixel_variance;
+    }
+    if (!split_outliers(op_name, dst, beauty, layer_begin, test_variance, firefly_factor,
+                        firefly_radius, region, nthreads, frame.clamped, frame.excess))
+        return false;
+    const bool measured = frame.guides.variance != nullptr;
+    if (!measured) {
+        if (!estimated_variance(dst, frame.clamped, region, nthreads, frame.variance))
             return false;
         frame.guides.variance = &frame.variance;
     }
@@ -176,6 +184,9 @@ bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
         || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
                     denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
                     nthreads))
+        return false;
+    if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
+                          beauty.spec().alpha_channel, nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
     return true;

@@ -5,6 +5,8 @@
 
 #include <mcdenoise/features.h>
 
+#include "plane.h"
+
 #include <OpenImageIO/imagebuf.h>
 
 namespace mcdenoise {
@@ -17,6 +19,7 @@ struct DenoiseFrame {
     DenoiseFrame& operator=(const DenoiseFrame&) = delete;
 
     OIIO::ImageBuf clamped;   ///< the beauty, fireflies clamped
+    Planes<float> excess;     ///< what the clamp took, per channel, to give back
     OIIO::ImageBuf variance;  ///< when not given as a guide
     Guides guides;            ///< the guides the average reads (variance set)
     float strength = 0.0f;    ///< the NL-means strength the variance calls for

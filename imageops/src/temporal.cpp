@@ -5,6 +5,7 @@
 #include <mcdenoise/temporal.h>
 
 #include "denoise_frame.h"
+#include "energy_outliers.h"
 #include "feature_field.h"
 #include "frame_warp.h"
 #include "guides.h"
@@ -219,7 +220,9 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
     std::vector<std::unique_ptr<Neighbour>> loaded;
     if (!load_neighbours(dst, centre, neighbours, offsets, fin, nthreads, loaded))
         return false;
-    if (!average_frames(dst, centre, c, fin, loaded, roi, nthreads))
+    if (!average_frames(dst, centre, c, fin, loaded, roi, nthreads)
+        || !give_back_excess(op_name, dst, c.excess, roi, beauty.roi(),
+                             beauty.spec().alpha_channel, nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
     return true;

@@ -106,7 +106,7 @@ PathResult trace_path(const Scene& scene, const Ray& camera_ray, SampleRng& rng)
         const Object& object = scene.objects[size_t(hit.object)];
         const Material& m = scene.materials[size_t(object.material)];
         const bool front = dot(ray.dir, hit.normal) < 0;
-        const Vec3 n = front ? hit.normal : -hit.normal;
+        const Vec3 n = shading_normal(m, front ? hit.normal : -hit.normal, hit.position);
         if (depth == 0)
             result.normal = n;
 

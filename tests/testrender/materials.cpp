@@ -50,6 +50,24 @@ Material Material::emitter(const Vec3& radiance)
     return m;
 }
 
+Material bumped(Material m, double amplitude, double scale)
+{
+    m.bump = amplitude;
+    m.bump_scale = scale;
+    return m;
+}
+
+Vec3 shading_normal(const Material& m, const Vec3& n, const Vec3& p)
+{
+    if (m.bump == 0)
+        return n;
+    const Vec3 q = p * (2 * pi * m.bump_scale);
+    const Vec3 ripple(std::sin(q.y + 1.7 * std::sin(q.z)), std::sin(q.z + 1.3 * std::sin(q.x)),
+                      std::sin(q.x + 1.1 * std::sin(q.y)));
+    const Vec3 tangent = ripple - n * dot(ripple, n);
+    return normalize(n + tangent * m.bump);
+}
+
 namespace {
 
 /// Probability of sampling the glossy lobe rather than the diffuse base.

@@ -18,6 +18,8 @@ struct Material {
     double roughness = 0.2;          ///< glossy: GGX alpha
     double ior = 1.5;                ///< glass: index of refraction
     Vec3 emission { 0, 0, 0 };       ///< emitter: radiance leaving the front side
+    double bump = 0;                 ///< bump map: the shading normal's largest tilt (0: none)
+    double bump_scale = 1;           ///< bump map: bumps per world unit
 
     static Material diffuse(const Texture& t);
     static Material mirror(const Vec3& tint);
@@ -37,6 +39,15 @@ struct BsdfSample {
     double pdf = 0;
     bool specular = false;
 };
+
+/// `m` with a bump map: its shading normal tilts by up to `amplitude`
+/// (a tangent offset of that length), in ripples `scale` per world unit.
+Material bumped(Material m, double amplitude, double scale);
+
+/// The shading normal at world position p of a surface with (front-facing)
+/// geometric normal n: n itself without a bump map, else n tilted by the
+/// tangent part of a smooth procedural ripple field.
+Vec3 shading_normal(const Material& m, const Vec3& n, const Vec3& p);
 
 /// f(wo, wi) * cos(wi) for the non-specular materials; `base` is the
 /// albedo texture's value at the hit.

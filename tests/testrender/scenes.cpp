@@ -2,7 +2,9 @@
 // handle: cornell (diffuse, mirror and glossy objects, direct light),
 // mirrors (reflections of distinct objects), textured (high-frequency
 // albedo), dof (defocus over depth), interior (mostly indirect light),
-// transparent (a transparent film: alpha); the
+// transparent (a transparent film: alpha), metal (bump-mapped metal with a
+// sun glint), bokeh (defocused highlights), dim (the interior, ten times
+// darker); the
 // animated shots are in shots.cpp. These stills ignore the frame.
 #include "scene.h"
 #include "scene_parts.h"
@@ -131,15 +133,15 @@ void dof(Scene& s, int /*frame: still*/)
     s.max_depth = 6;
 }
 
-void interior(Scene& s, int /*frame: still*/)
+/// The interior room with an uplight of radiance `light`.
+void interior_room(Scene& s, const Vec3& light_radiance)
 {
-    s.description = "room lit by an uplight against the ceiling: almost all light is indirect";
     const int wall = s.add_material(Material::diffuse(Texture::constant({ 0.75, 0.72, 0.65 })));
     const int floor = s.add_material(
         Material::diffuse(Texture::noise({ 0.35, 0.2, 0.1 }, { 0.6, 0.4, 0.2 }, 3)));
     const int ceiling = s.add_material(Material::diffuse(Texture::constant({ 0.85, 0.85, 0.85 })));
     const int accent = s.add_material(Material::diffuse(Texture::constant({ 0.2, 0.35, 0.6 })));
-    const int light = s.add_material(Material::emitter({ 120, 100, 70 }));
+    const int light = s.add_material(Material::emitter(light_radiance));
     const int dark = s.add_material(Material::diffuse(Texture::constant({ 0.1, 0.1, 0.1 })));
     const int wood = s.add_material(Material::glossy(
         Texture::noise({ 0.3, 0.15, 0.05 }, { 0.5, 0.3, 0.12 }, 8), { 0.05, 0.05, 0.05 }, 0.25));
@@ -162,6 +164,64 @@ void interior(Scene& s, int /*frame: still*/)
     s.camera.vfov_degrees = 55;
     s.max_depth = 10;
     s.roulette_depth = 4;
+}
+
+void interior(Scene& s, int /*frame: still*/)
+{
+    s.description = "room lit by an uplight against the ceiling: almost all light is indirect";
+    interior_room(s, { 120, 100, 70 });
+}
+
+void dim(Scene& s, int /*frame: still*/)
+{
+    s.description = "the interior with a ten times dimmer uplight: dark, almost all indirect";
+    interior_room(s, { 12, 10, 7 });
+}
+
+void metal(Scene& s, int /*frame: still*/)
+{
+    s.description = "bump-mapped gold sphere and steel plate under a small, intense sun: glints";
+    const Vec3 gold_f0(1.0, 0.71, 0.29), steel_f0(0.56, 0.57, 0.58);
+    const int gold = s.add_material(bumped(
+        Material::glossy(Texture::constant({ 0.02, 0.015, 0.01 }), gold_f0, 0.08), 0.25, 6));
+    const int steel = s.add_material(bumped(
+        Material::glossy(Texture::constant({ 0.05, 0.05, 0.05 }), steel_f0, 0.15), 0.15, 3));
+    const int matte = s.add_material(Material::diffuse(Texture::constant({ 0.6, 0.25, 0.2 })));
+    const int sun = s.add_material(Material::emitter({ 4000, 3800, 3400 }));
+    s.add(facing_quad({ -3, 0, -3 }, { 6, 0, 0 }, { 0, 0, 6 }, { 0, 1, 0 }), steel, 1);
+    add_panel_light(s, { 2.5, 6, -3 }, 0.08, 0.08, sun, 2);
+    s.add(Shape::sphere({ -0.3, 0.6, 0 }, 0.6), gold, 3);
+    s.add(Shape::box({ 0.9, 0.3, 0.6 }, { 0.3, 0.3, 0.3 }, 20), matte, 4);
+    s.background = { 0.25, 0.3, 0.4 };
+    s.camera.eye = { 0, 1.4, 3.2 };
+    s.camera.look_at = { 0, 0.4, 0 };
+    s.camera.vfov_degrees = 45;
+    s.max_depth = 6;
+}
+
+void bokeh(Scene& s, int /*frame: still*/)
+{
+    s.description = "a sphere in focus before small mirror balls far behind it: the light's "
+                    "glints in the balls defocus into bright discs";
+    const int floor = s.add_material(
+        Material::diffuse(Texture::checker({ 0.5, 0.5, 0.5 }, { 0.1, 0.1, 0.12 }, 1)));
+    const int red = s.add_material(Material::diffuse(Texture::constant({ 0.7, 0.15, 0.1 })));
+    const int mirror = s.add_material(Material::mirror({ 0.9, 0.9, 0.9 }));
+    const int light = s.add_material(Material::emitter({ 40, 36, 30 }));
+    s.add(facing_quad({ -20, 0, -30 }, { 40, 0, 0 }, { 0, 0, 40 }, { 0, 1, 0 }), floor, 1);
+    add_panel_light(s, { 0, 4, 3 }, 1, 1, light, 2);
+    s.add(Shape::sphere({ 0, 0.5, 1.5 }, 0.5), red, 3);
+    for (int i = 0; i < 7; ++i) {
+        const double x = -2.1 + 0.7 * i, y = 0.5 + 0.4 * (i % 3), z = -4.0 - 0.8 * (i % 2);
+        s.add(Shape::sphere({ x, y, z }, 0.2), mirror, 10 + i);
+    }
+    s.background = { 0.02, 0.02, 0.03 };
+    s.camera.eye = { 0, 0.9, 4.5 };
+    s.camera.look_at = { 0, 0.6, 0 };
+    s.camera.vfov_degrees = 40;
+    s.camera.aperture_radius = 0.25;
+    s.camera.focus_distance = 3.0;
+    s.max_depth = 6;
 }
 
 void transparent(Scene& s, int /*frame: still*/)
@@ -196,6 +256,8 @@ struct Entry {
 const Entry scenes[] = { { "cornell", cornell },         { "mirrors", mirrors },
                          { "textured", textured },       { "dof", dof },
                          { "interior", interior },       { "transparent", transparent },
+                         { "metal", metal },             { "bokeh", bokeh },
+                         { "dim", dim },
                          { "shot_static", shot_static },
                          { "shot_truck", shot_truck },   { "shot_object", shot_object } };
 

@@ -10,13 +10,24 @@ MCDENOISE_API_BEGIN
 /// Denoise a Monte Carlo render with every guide it is given: the
 /// project's best non-learned result in one call.
 ///
-/// The steps, each a filter of this library:
-/// 1. `clamp_fireflies` (factor 2, radius 2): the few very bright samples
-///    that dominate the error are scaled down before anything is averaged.
-/// 2. `nlmeans` (search radius 5, patch radius 1) on the clamped beauty, with
+/// The steps:
+/// 1. Outliers, keeping energy: a pixel `clamp_fireflies` (factor 2,
+///    radius 2) would scale down is split into the clamped value, which is
+///    averaged, and the excess over it, which is not. A pixel whose
+///    luminance excess exceeds twice the standard deviation of its measured
+///    noise (the `variance` guide, else `(half_a - half_b)^2 / 4`) is a
+///    highlight the samples agree on, not a firefly, and is kept whole.
+/// 2. `nlmeans` (search radius 5, patch radius 1) on the split beauty, with
 ///    variance-normalised patch distances (Rousselle, Knaus & Zwicker 2012)
 ///    and feature weights (Rousselle, Manzi & Zwicker 2013) with fall-offs
 ///    `denoise_feature_sigmas`.
+/// 3. The excess is given back: spread over its neighbourhood with a
+///    Gaussian of standard deviation 10 pixels (radius 30), normalised per
+///    source pixel over the data window, so the frame keeps a firefly's
+///    energy without a blotch where it was. The per-pixel split applies to
+///    the colour channels; further channels (alpha) are filtered as they
+///    are. The spread adds colour without alpha: near coverage edges of a
+///    premultiplied image, colour may exceed alpha by a spread excess.
 ///
 /// What each guide buys (relMSE per guide set: docs/quality.md):
 /// - `variance`: the noise level of every pixel, so the colour distance

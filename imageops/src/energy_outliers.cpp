@@ -1,0 +1,240 @@
+// energy_outliers.cpp: `denoise`'s energy-keeping outlier step: the firefly
+// excess taken out of the beauty, and spread back with a normalised Gaussian.
+#include "energy_outliers.h"
+
+#include "feature_field.h"
+#include "layer_channels.h"
+#include "window.h"
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace mcdenoise {
+
+using OIIO::ImageBuf;
+using OIIO::ROI;
+
+namespace {
+
+/// The luminance variance over `region` of `variance` (a variance guide),
+/// or an empty plane without one.
+bool luminance_variance(const char* op, ImageBuf& dst, const ImageBuf* variance, int nc,
+                        const ROI& region, int nthreads, Plane<float>& out)
+{
+    out = Plane<float>();
+    GuideChannels given;
+    if (!variance)
+        return true;
+    if (!load_guide_channels(op, dst, *variance, region, nthreads, given))
+        return false;
+    const auto lw = luminance_weights(nc);
+    out           = Plane<float>(region);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const size_t i = out.offset(x, y);
+            float v        = 0.0f;
+            for (int c = 0; c < nc; ++c) {
+                const size_t k = size_t(std::min(c, given.nchannels() - 1));
+                v += lw[size_t(c)] * lw[size_t(c)] * std::max(0.0f, given.values[k][i]);
+            }
+            out.values[i] = v;
+        }
+    });
+    return true;
+}
+
+/// Rec. 709 (or mean) luminance of the first `nc` channels of `v`,
+/// non-finite values as 0.
+float luminance(const float* v, int nc)
+{
+    const auto lw = luminance_weights(nc);
+    float lum     = 0.0f;
+    for (int c = 0; c < nc; ++c)
+        lum += std::isfinite(v[c]) ? lw[size_t(c)] * v[c] : 0.0f;
+    return lum;
+}
+
+/// The Gaussian of `excess_spread_sigma` at offsets -radius..radius.
+std::vector<float> spread_kernel()
+{
+    std::vector<float> g(size_t(2 * excess_spread_radius + 1));
+    const double s2 = 2.0 * double(excess_spread_sigma) * double(excess_spread_sigma);
+    for (int t = -excess_spread_radius; t <= excess_spread_radius; ++t)
+        g[size_t(t + excess_spread_radius)] = float(std::exp(-double(t) * t / s2));
+    return g;
+}
+
+/// 1 / (the sum of g over the pixels of [lo, hi) around each q in [a, b)).
+std::vector<float> inverse_coverage(const std::vector<float>& g, int a, int b, int lo, int hi)
+{
+    std::vector<float> inv(size_t(b - a));
+    for (int q = a; q < b; ++q) {
+        const Span s = clip_window(q, excess_spread_radius, lo, hi);
+        double sum   = 0.0;
+        for (int p = s.begin; p < s.end; ++p)
+            sum += g[size_t(p - q + excess_spread_radius)];
+        inv[size_t(q - a)] = float(1.0 / sum);
+    }
+    return inv;
+}
+
+}  // namespace
+
+bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+                    const ImageBuf* variance, float factor, int radius, const ROI& region,
+                    int nthreads, ImageBuf& kept, Planes<float>& excess)
+{
+    const int nch = beauty.nchannels();
+    const int nc  = colour_channels(nch);
+    Plane<float> noise;
+    if (!luminance_variance(op, dst, variance, nc, region, nthreads, noise))
+        return false;
+    if (!clamp_fireflies_layers(kept, beauty, layer_begin, {}, factor, radius, region,
+                                nthreads)) {
+        dst.errorfmt("{}: {}", op, kept.geterror());
+        return false;
+    }
+    PixelBlock block;
+    if (!read_beauty(op, dst, beauty, region, block))
+        return false;
+    excess = Planes<float>(region, nch, 0.0f);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const float* in = block.pixel(x, y);
+            float* out      = static_cast<float*>(kept.pixeladdr(x, y));
+            const float lum = luminance(in, nc);
+            const float cut = lum - luminance(out, nc);
+            if (!(cut > 0.0f))
+                continue;
+            const size_t i = excess.offset(x, y);
+            const bool highlight = !noise.values.empty()
+                                   && cut > consistent_excess_sigmas * std::sqrt(noise.values[i]);
+            for (int c = 0; c < nch; ++c) {
+                if (c >= nc && c < layer_begin)
+                    continue;
+                if (highlight)
+                    out[c] = in[c];
+                else if (std::isfinite(in[c]))
+                    excess.values[size_t(c)][i] = in[c] - out[c];
+            }
+        }
+    });
+    return true;
+}
+
+ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+                       int nchannels, int nthreads)
+{
+    const std::vector<float> g = spread_kernel();
+    const ROI& reg             = excess.region;
+    const int nc               = excess.nchannels();
+    const std::vector<float> inv_x = inverse_coverage(g, reg.xbegin, reg.xend,
+                                                      data_window.xbegin, data_window.xend);
+    const std::vector<float> inv_y = inverse_coverage(g, reg.ybegin, reg.yend,
+                                                      data_window.ybegin, data_window.yend);
+    // Along the rows: h(x, y) = sum_t g(t) e(x + t, y) / nx(x + t), for the
+    // ROI's columns and every row of the region.
+    ROI rows    = reg;
+    rows.xbegin = roi.xbegin;
+    rows.xend   = roi.xend;
+    Planes<float> h(rows, nc, 0.0f);
+    parallel_rows(rows, nthreads, [&](int y) {
+        for (int c = 0; c < nc; ++c) {
+            const float* e = excess.row(c, y);
+            float* out     = h.row(c, y);
+            for (int qx = reg.xbegin; qx < reg.xend; ++qx) {
+                const float v = e[qx - reg.xbegin];
+                if (v == 0.0f)
+                    continue;
+                const float w   = v * inv_x[size_t(qx - reg.xbegin)];
+                const Span span = clip_window(qx, excess_spread_radius, roi.xbegin, roi.xend);
+                for (int x = span.begin; x < span.end; ++x)
+                    out[x - roi.xbegin] += w * g[size_t(x - qx + excess_spread_radius)];
+            }
+        }
+    });
+    // Down the columns, into the channels of the result, for the planes
+    // that hold any excess.
+    std::vector<char> given(size_t(nc));
+    for (int c = 0; c < nc; ++c)
+        given[size_t(c)] = std::any_of(excess.values[size_t(c)].begin(),
+                                       excess.values[size_t(c)].end(),
+                                       [](float v) { return v != 0.0f; });
+    ROI full    = roi;
+    full.chbegin = 0;
+    full.chend   = nchannels;
+    ImageBuf spread(OIIO::ImageSpec(full, OIIO::TypeDesc::FLOAT));
+    OIIO::ImageBufAlgo::zero(spread);
+    parallel_rows(roi, nthreads, [&](int y) {
+        const Span span = clip_window(y, excess_spread_radius, reg.ybegin, reg.yend);
+        std::vector<float> sum(size_t(roi.width()));
+        for (int c = 0; c < nc; ++c) {
+            if (!given[size_t(c)])
+                continue;
+            std::fill(sum.begin(), sum.end(), 0.0f);
+            for (int qy = span.begin; qy < span.end; ++qy) {
+                const float w = g[size_t(y - qy + excess_spread_radius)]
+                                * inv_y[size_t(qy - reg.ybegin)];
+                const float* in = h.row(c, qy);
+                for (size_t i = 0; i < sum.size(); ++i)
+                    sum[i] += w * in[i];
+            }
+            for (int x = roi.xbegin; x < roi.xend; ++x)
+                static_cast<float*>(spread.pixeladdr(x, y))[c] = sum[size_t(x - roi.xbegin)];
+        }
+    });
+    return spread;
+}
+
+namespace {
+
+/// Add `spread` to the float image `sum` over `roi` as `give_back_excess`
+/// says.
+void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha_channel,
+                int nthreads)
+{
+    const int nch    = sum.nchannels();
+    const int nc     = colour_channels(nch);
+    const bool alpha = alpha_channel >= nc && alpha_channel < nch;
+    parallel_rows(roi, nthreads, [&](int y) {
+        for (int x = roi.xbegin; x < roi.xend; ++x) {
+            float* out     = static_cast<float*>(sum.pixeladdr(x, y));
+            const float* e = static_cast<const float*>(spread.pixeladdr(x, y));
+            float factor   = 1.0f;
+            for (int c = 0; alpha && c < nc; ++c)
+                if (e[c] > 0.0f && out[c] <= out[alpha_channel]
+                    && out[c] + e[c] > out[alpha_channel])
+                    factor = std::min(factor, (out[alpha_channel] - out[c]) / e[c]);
+            for (int c = 0; c < nch; ++c)
+                out[c] += factor * e[c];
+        }
+    });
+}
+
+}  // namespace
+
+bool give_back_excess(const char* op, ImageBuf& dst, const Planes<float>& excess,
+                      const ROI& roi, const ROI& data_window, int alpha_channel, int nthreads)
+{
+    const ImageBuf spread = spread_excess(excess, roi, data_window, dst.nchannels(), nthreads);
+    if (dst.spec().format == OIIO::TypeDesc::FLOAT && dst.localpixels()) {
+        add_spread(dst, spread, roi, alpha_channel, nthreads);
+        return true;
+    }
+    ImageBuf sum;
+    if (!OIIO::ImageBufAlgo::copy(sum, dst, OIIO::TypeDesc::FLOAT, roi, nthreads)) {
+        dst.errorfmt("{}: could not add the spread excess: {}", op, sum.geterror());
+        return false;
+    }
+    add_spread(sum, spread, roi, alpha_channel, nthreads);
+    if (!OIIO::ImageBufAlgo::paste(dst, roi.xbegin, roi.ybegin, 0, 0, sum, roi, nthreads)) {
+        dst.errorfmt("{}: could not add the spread excess: {}", op, dst.geterror());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace mcdenoise

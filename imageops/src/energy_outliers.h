@@ -1,0 +1,58 @@
+// energy_outliers.h: `denoise`'s outlier step, which keeps energy: the part
+// of a firefly above `clamp_fireflies`' bound is taken out of the beauty
+// before anything is averaged and spread back over a wide neighbourhood
+// afterwards, so the frame keeps its energy and a firefly never becomes a
+// blotch.
+#pragma once
+
+#include "plane.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+namespace mcdenoise {
+
+/// Standard deviation, in pixels, of the Gaussian the excess is spread with.
+constexpr float excess_spread_sigma = 10.0f;
+/// Radius of that Gaussian (3 sigma): the excess of a pixel reaches this far.
+constexpr int excess_spread_radius = 30;
+/// A pixel above the firefly bound is kept whole when its excess exceeds
+/// this many standard deviations of its measured noise: a highlight the
+/// samples agree on, not a firefly.
+constexpr float consistent_excess_sigmas = 2.0f;
+
+/// Split `beauty` over `region` (inside its data window, all channels) into
+/// `kept`, `clamp_fireflies(beauty, factor, radius)` with its per-pixel
+/// scale, decided on the colour, applied to the colour and to the stacked
+/// layers from channel `layer_begin` on (layer_channels.h), except where the
+/// luminance excess over the bound exceeds `consistent_excess_sigmas`
+/// standard deviations of the pixel's measured noise (`variance`, a
+/// variance guide as features.h reads it; without it every clamped pixel
+/// counts as a firefly), and `excess = beauty - kept`, one plane per
+/// channel of `beauty` over `region` (0 for the channels between the colour
+/// and `layer_begin`, such as alpha, and where a value is not finite). On
+/// failure sets `dst`'s error prefixed with `op`.
+bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                    int layer_begin, const OIIO::ImageBuf* variance, float factor, int radius,
+                    const OIIO::ROI& region, int nthreads, OIIO::ImageBuf& kept,
+                    Planes<float>& excess);
+
+/// The excess spread over `roi`: a float image over `roi` with `nchannels`
+/// channels, channel c (for each plane c of `excess`) holding `sum_q excess(q) g(p - q) / n(q)`
+/// (g: the Gaussian of `excess_spread_sigma`; n(q): the sum of g over the
+/// pixels of `data_window`, so each pixel's excess is given out whole), the
+/// others 0. `excess` must cover `roi` grown by `excess_spread_radius`
+/// (clipped to `data_window`).
+OIIO::ImageBuf spread_excess(const Planes<float>& excess, const OIIO::ROI& roi,
+                             const OIIO::ROI& data_window, int nchannels, int nthreads);
+
+/// Add the excess spread (`spread_excess`) to `dst` over `roi`, one factor
+/// per pixel for every channel, so what is linear across channels stays so.
+/// With an alpha channel (`alpha_channel` >= 0) the factor is lowered, at
+/// the pixels where the spread would lift a colour channel above alpha, to
+/// what keeps it at alpha (premultiplied colour stays <= alpha where it
+/// was). On failure sets `dst`'s error prefixed with `op`.
+bool give_back_excess(const char* op, OIIO::ImageBuf& dst, const Planes<float>& excess,
+                      const OIIO::ROI& roi, const OIIO::ROI& data_window, int alpha_channel,
+                      int nthreads);
+
+}  // namespace mcdenoise
