@@ -158,7 +158,7 @@ ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& d
     });
     // Down the columns, into the channels of the result, for the planes
     // that hold any excess.
-    std::vector<char> given(size_t(nc));
+    std::vector<char> given(static_cast<size_t>(nc));
     for (int c = 0; c < nc; ++c)
         given[size_t(c)] = std::any_of(excess.values[size_t(c)].begin(),
                                        excess.values[size_t(c)].end(),

@@ -11,18 +11,21 @@
 MCDENOISE_API_BEGIN
 
 /// Denoise `beauty` as `denoise` does and every image of `layers` with the
-/// same per-pixel operator: the firefly scale and the non-local means
-/// weights are decided once, on the beauty's colour and the guides, and
-/// applied alike to every layer channel (the firefly scale to the colour
-/// and the layers, not to the beauty's alpha or other channels).
+/// same per-pixel operator: the outlier split (which pixels keep only the
+/// firefly bound for the average, and the factor their excess is given
+/// back with), and the non-local means weights are decided once, on the
+/// beauty's colour and the guides, and applied alike to every layer
+/// channel (the split to the colour and the layers, not to the beauty's
+/// alpha or other channels).
 ///
 /// So the result is linear in the layers: layers that sum to the beauty's
 /// colour sum to the denoised beauty's colour (up to float rounding), and
 /// a layer equal to the beauty comes out equal to the denoised beauty.
 /// The beauty's result is bit-identical to `denoise(beauty, guides)`.
 /// Premultiplied colour and alpha share the weights, which are
-/// non-negative and normalised, so C <= alpha holds in the result wherever
-/// it held in every input pixel of the window.
+/// non-negative and normalised, and the excess given back is cut where it
+/// would lift colour above alpha, so C <= alpha holds in the result
+/// wherever it held in every input pixel of the window.
 ///
 /// Use it for passes that add up to the beauty: light groups, per-lobe
 /// direct/indirect passes, emission. Colour (filter) passes such as
