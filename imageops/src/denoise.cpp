@@ -186,7 +186,7 @@ bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
                     nthreads))
         return false;
     if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
-                          beauty.spec().alpha_channel, nthreads))
+                          premultiplied_alpha(beauty, layer_begin), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
     return true;

@@ -189,6 +189,14 @@ ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& d
     return spread;
 }
 
+int premultiplied_alpha(const ImageBuf& beauty, int layer_begin)
+{
+    const int given = beauty.spec().alpha_channel;
+    if (given >= 0)
+        return given;
+    return layer_begin > feature_colour_channels ? feature_colour_channels : -1;
+}
+
 namespace {
 
 /// Add `spread` to the float image `sum` over `roi` as `give_back_excess`
@@ -208,8 +216,13 @@ void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha
                 if (e[c] > 0.0f && out[c] <= out[alpha_channel]
                     && out[c] + e[c] > out[alpha_channel])
                     factor = std::min(factor, (out[alpha_channel] - out[c]) / e[c]);
-            for (int c = 0; c < nch; ++c)
+            const float a = alpha ? out[alpha_channel] : 0.0f;
+            for (int c = 0; c < nch; ++c) {
+                const bool held = alpha && c < nc && out[c] <= a;
                 out[c] += factor * e[c];
+                if (held)  // the factor's rounding must not lift it above
+                    out[c] = std::min(out[c], a);
+            }
         }
     });
 }

@@ -45,6 +45,11 @@ bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& b
 OIIO::ImageBuf spread_excess(const Planes<float>& excess, const OIIO::ROI& roi,
                              const OIIO::ROI& data_window, int nchannels, int nthreads);
 
+/// The alpha channel `give_back_excess` keeps the colour of `beauty` under:
+/// its `spec().alpha_channel` when set, else channel 3 when the beauty's
+/// own channels (those before `layer_begin`) go beyond the colour, else -1.
+int premultiplied_alpha(const OIIO::ImageBuf& beauty, int layer_begin);
+
 /// Add the excess spread (`spread_excess`) to `dst` over `roi`, one factor
 /// per pixel for every channel, so what is linear across channels stays so.
 /// With an alpha channel (`alpha_channel` >= 0) the factor is lowered, at

@@ -222,7 +222,7 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
         return false;
     if (!average_frames(dst, centre, c, fin, loaded, roi, nthreads)
         || !give_back_excess(op_name, dst, c.excess, roi, beauty.roi(),
-                             beauty.spec().alpha_channel, nthreads))
+                             premultiplied_alpha(beauty, beauty.nchannels()), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
     return true;

@@ -26,9 +26,10 @@ MCDENOISE_API_BEGIN
 ///    source pixel over the data window, so the frame keeps a firefly's
 ///    energy without a blotch where it was. The per-pixel split applies to
 ///    the colour channels; further channels (alpha) are filtered as they
-///    are. With an alpha channel (`spec().alpha_channel`), the excess a
-///    pixel receives is scaled down where it would lift a colour channel
-///    above alpha, so premultiplied colour stays <= alpha where it was.
+///    are. With an alpha channel (`spec().alpha_channel`, else a fourth
+///    channel), the excess a pixel receives is scaled down where it would
+///    lift a colour channel above alpha, so premultiplied colour stays
+///    <= alpha where it was.
 ///
 /// What each guide buys (relMSE per guide set: docs/quality.md):
 /// - `variance`: the noise level of every pixel, so the colour distance
