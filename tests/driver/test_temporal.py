@@ -114,6 +114,7 @@ def test_neighbour_of_another_resolution_fails_that_frame(tmp_path):
     (("--frames", "1", "--temporal", "2", "--median", "3", "--denoise"), "must be the first command"),
     (("--frames", "1", "--temporal", "-1", "--denoise"), "expected a frame count 0..8"),
     (("--frames", "1", "--temporal", "9", "--denoise"), "expected a frame count 0..8"),
+    (("--frames", "1", "--temporal", "1", "--denoise", "--aovs", "auto"), "cannot be combined with --aovs"),
 ])
 def test_bad_temporal_use_is_a_usage_error(tmp_path, args, needle):
     shot = render(tmp_path / "in", frames=[1])
