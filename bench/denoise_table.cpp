@@ -19,22 +19,12 @@
 namespace {
 
 using OIIO::ImageBuf;
+using testimg::previous_preset;
 using testimg::Render;
 
 const char* const scenes[] = { "cornell", "mirrors", "textured", "dof",
                                "interior", "metal",  "bokeh",    "dim" };
 const int spps[]           = { 4, 16, 64, 256 };
-
-/// The preset before the energy-keeping outlier step: the clamp, then
-/// nlmeans with every guide but the object id and the halves.
-ImageBuf previous_preset(const Render& r)
-{
-    mcdenoise::Guides g = r.guides();
-    g.object_id = g.half_a = g.half_b = nullptr;
-    return mcdenoise::nlmeans(mcdenoise::clamp_fireflies(r.beauty, {}, 2.0f, 2), g, 5, 1,
-                              mcdenoise::denoise_measured_strength,
-                              mcdenoise::denoise_feature_sigmas);
-}
 
 struct Row {
     double raw, previous, denoised, mean_prev, mean_new, top_prev, top_new;

@@ -18,6 +18,7 @@
 namespace {
 
 using OIIO::ImageBuf;
+using testimg::previous_preset;
 using testimg::Render;
 
 std::string refset_file(const std::string& name)
@@ -183,17 +184,6 @@ TEST_P(DenoiseOn, BeatsRaw256SppOnSmoothlyLitScenes)
 
 INSTANTIATE_TEST_SUITE_P(RefSet, DenoiseOn,
                          ::testing::Values("cornell", "mirrors", "textured", "dof", "interior"));
-
-// The preset before its outlier step kept energy: clamp_fireflies, then
-// nlmeans with every guide (what denoise did), for the comparisons below.
-ImageBuf previous_preset(const Render& r)
-{
-    mcdenoise::Guides g = r.guides();
-    g.object_id = g.half_a = g.half_b = nullptr;
-    return mcdenoise::nlmeans(mcdenoise::clamp_fireflies(r.beauty, {}, 2.0f, 2), g, 5, 1,
-                              mcdenoise::denoise_measured_strength,
-                              mcdenoise::denoise_feature_sigmas);
-}
 
 const char* const all_scenes[] = { "cornell", "mirrors", "textured", "dof",
                                    "interior", "metal",  "bokeh",    "dim" };

@@ -1,6 +1,8 @@
 // energy.cpp: the frame mean and brightest-pixel energy ratios of energy.h.
 #include "energy.h"
 
+#include <mcdenoise/mcdenoise.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -53,6 +55,15 @@ double brightest_energy_ratio(const OIIO::ImageBuf& img, const OIIO::ImageBuf& r
         total += b[order[k]];
     }
     return kept / total;
+}
+
+OIIO::ImageBuf previous_preset(const Render& r)
+{
+    mcdenoise::Guides g = r.guides();
+    g.object_id = g.half_a = g.half_b = nullptr;
+    return mcdenoise::nlmeans(mcdenoise::clamp_fireflies(r.beauty, {}, 2.0f, 2), g, 5, 1,
+                              mcdenoise::denoise_measured_strength,
+                              mcdenoise::denoise_feature_sigmas);
 }
 
 }  // namespace testimg

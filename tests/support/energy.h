@@ -1,7 +1,10 @@
 // energy.h: how much of a reference's light an image keeps: the whole
 // frame's mean and the brightest pixels' energy, in luminance (features.h's
-// weights), for the denoise quality tests and tables.
+// weights), and the preset that lost energy, for the denoise quality tests
+// and tables.
 #pragma once
+
+#include "render_file.h"
 
 #include <OpenImageIO/imagebuf.h>
 
@@ -14,5 +17,10 @@ double frame_mean_ratio(const OIIO::ImageBuf& img, const OIIO::ImageBuf& ref);
 /// one pixel): the sum of `img`'s luminance over the sum of `ref`'s.
 double brightest_energy_ratio(const OIIO::ImageBuf& img, const OIIO::ImageBuf& ref,
                               double fraction = 0.005);
+
+/// The `denoise` preset before its outlier step kept energy:
+/// clamp_fireflies (factor 2, radius 2), then nlmeans with every guide of
+/// `r` but the object id and the halves.
+OIIO::ImageBuf previous_preset(const Render& r);
 
 }  // namespace testimg
