@@ -113,8 +113,8 @@ RunError write_error(const std::string& path, const std::string& temp, const std
 
 }  // namespace
 
-void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
-                        const std::string& context, const std::map<int, ImageBuf>& stored)
+template<class Fill>
+void OutputBatch::write_temp(const std::string& path, const std::string& context, Fill&& fill)
 {
     Timer timer;
     std::string temp = temp_path(path);
@@ -122,45 +122,46 @@ void OutputBatch::write(const std::string& path, const ImageSpec& spec, const Im
     auto out = OIIO::ImageOutput::create(temp);
     if (!out)
         throw fail(OIIO::geterror());
-    ImageSpec file_spec = spec;
-    if (!out->supports("channelformats"))
-        file_spec.channelformats.clear();
-    if (!out->supports("tiles"))
-        file_spec.tile_width = file_spec.tile_height = file_spec.tile_depth = 0;
     pending_.push_back(Pending{ temp, path, track_temp_file(temp) });  // from here on it is removed on failure
-    if (!out->open(temp, file_spec))
-        throw fail(out->geterror());
-    std::vector<float> storage;
-    const bool native = !stored.empty() && !file_spec.channelformats.empty();
-    const bool written = native ? out->write_image(OIIO::TypeUnknown, native_pixels(file_spec, pixels, stored).data())
-                                : out->write_image(TypeDesc::FLOAT, float_pixels(pixels, storage));
-    if (!written)
-        throw fail(out->geterror());
+    fill(*out, temp, fail);
     if (!out->close())
         throw fail(out->geterror());
     stats_.add_write(timer.seconds());
 }
 
+void OutputBatch::write(const std::string& path, const ImageSpec& spec, const ImageBuf& pixels,
+                        const std::string& context, const std::map<int, ImageBuf>& stored)
+{
+    write_temp(path, context, [&](OIIO::ImageOutput& out, const std::string& temp, auto&& fail) {
+        ImageSpec file_spec = spec;
+        if (!out.supports("channelformats"))
+            file_spec.channelformats.clear();
+        if (!out.supports("tiles"))
+            file_spec.tile_width = file_spec.tile_height = file_spec.tile_depth = 0;
+        if (!out.open(temp, file_spec))
+            throw fail(out.geterror());
+        std::vector<float> storage;
+        const bool native = !stored.empty() && !file_spec.channelformats.empty();
+        const bool written = native
+                                 ? out.write_image(OIIO::TypeUnknown, native_pixels(file_spec, pixels, stored).data())
+                                 : out.write_image(TypeDesc::FLOAT, float_pixels(pixels, storage));
+        if (!written)
+            throw fail(out.geterror());
+    });
+}
+
 void OutputBatch::write_parts(const std::string& path, const std::vector<ImageSpec>& specs,
                               const std::vector<ImageBuf>& pixels, const std::string& context)
 {
-    Timer timer;
-    std::string temp = temp_path(path);
-    auto fail = [&](const std::string& reason) { return write_error(path, temp, context, reason); };
-    auto out = OIIO::ImageOutput::create(temp);
-    if (!out)
-        throw fail(OIIO::geterror());
-    pending_.push_back(Pending{ temp, path, track_temp_file(temp) });  // from here on it is removed on failure
-    std::vector<float> storage;
-    for (size_t p = 0; p < specs.size(); ++p) {
-        const bool opened = p == 0 ? out->open(temp, int(specs.size()), specs.data())
-                                   : out->open(temp, specs[p], OIIO::ImageOutput::AppendSubimage);
-        if (!opened || !out->write_image(TypeDesc::FLOAT, float_pixels(pixels[p], storage)))
-            throw fail(out->geterror());
-    }
-    if (!out->close())
-        throw fail(out->geterror());
-    stats_.add_write(timer.seconds());
+    write_temp(path, context, [&](OIIO::ImageOutput& out, const std::string& temp, auto&& fail) {
+        std::vector<float> storage;
+        for (size_t p = 0; p < specs.size(); ++p) {
+            const bool opened = p == 0 ? out.open(temp, int(specs.size()), specs.data())
+                                       : out.open(temp, specs[p], OIIO::ImageOutput::AppendSubimage);
+            if (!opened || !out.write_image(TypeDesc::FLOAT, float_pixels(pixels[p], storage)))
+                throw fail(out.geterror());
+        }
+    });
 }
 
 void OutputBatch::commit()

@@ -46,6 +46,12 @@ public:
     void commit();
 
 private:
+    /// Creates the writer of a temp file beside `path`, tracks the file,
+    /// calls `fill(out, temp, fail)` to open and write it, closes it and
+    /// times it all; `fail(reason)` is the RunError to throw.
+    template<class Fill>
+    void write_temp(const std::string& path, const std::string& context, Fill&& fill);
+
     /// A temp file written and not yet renamed.
     struct Pending {
         std::string temp, final_path;
