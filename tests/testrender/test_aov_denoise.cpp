@@ -29,6 +29,27 @@ ImageBuf image(const RenderBuffers& b, const std::vector<float>& values, int n)
     return img;
 }
 
+/// The guides `denoise` reads, from a render's buffers.
+struct RenderGuides {
+    ImageBuf normal, albedo, depth, variance;
+    explicit RenderGuides(const RenderBuffers& b)
+        : normal(image(b, b.normal, 3))
+        , albedo(image(b, b.albedo, 3))
+        , depth(image(b, b.depth, 1))
+        , variance(image(b, b.variance, 3))
+    {
+    }
+    mcdenoise::Guides view() const
+    {
+        mcdenoise::Guides g;
+        g.normal   = &normal;
+        g.albedo   = &albedo;
+        g.depth    = &depth;
+        g.variance = &variance;
+        return g;
+    }
+};
+
 /// The light layers a compositor adds up: per lobe colour x direct and
 /// colour x indirect, then emission and environment.
 std::vector<ImageBuf> light_layers(const RenderBuffers& b)
@@ -68,13 +89,8 @@ TEST_P(SceneLayers, DenoisedLightPassesSumToTheDenoisedBeauty)
     ImageBuf beauty = image(b, b.beauty, 3);
     if (!b.alpha.empty())
         beauty = OIIO::ImageBufAlgo::channel_append(beauty, image(b, b.alpha, 1));
-    const ImageBuf normal = image(b, b.normal, 3), albedo = image(b, b.albedo, 3),
-                   depth = image(b, b.depth, 1), variance = image(b, b.variance, 3);
-    mcdenoise::Guides guides;
-    guides.normal   = &normal;
-    guides.albedo   = &albedo;
-    guides.depth    = &depth;
-    guides.variance = &variance;
+    const RenderGuides render_guides(b);
+    const mcdenoise::Guides guides = render_guides.view();
     const std::vector<ImageBuf> layers = light_layers(b);
     std::vector<const ImageBuf*> pointers;
     for (const ImageBuf& l : layers)
@@ -143,13 +159,8 @@ TEST_P(SceneQuality, IndirectDiffuseLosesMostOfItsNoiseAndTheRebuiltBeautyStaysC
     ASSERT_TRUE(make_scene(GetParam(), scene));
     const RenderBuffers b = render_at(scene, 16), ref = render_at(scene, 512);
     const ImageBuf beauty = image(b, b.beauty, 3), reference = image(ref, ref.beauty, 3);
-    const ImageBuf normal = image(b, b.normal, 3), albedo = image(b, b.albedo, 3),
-                   depth = image(b, b.depth, 1), variance = image(b, b.variance, 3);
-    mcdenoise::Guides guides;
-    guides.normal   = &normal;
-    guides.albedo   = &albedo;
-    guides.depth    = &depth;
-    guides.variance = &variance;
+    const RenderGuides render_guides(b);
+    const mcdenoise::Guides guides = render_guides.view();
     std::vector<ImageBuf> raw;
     std::vector<const ImageBuf*> layers;
     for (int offset : light_offsets)
