@@ -96,33 +96,6 @@ ImageBuf baseline(const Shot& shot, const std::vector<ImageBuf>& denoised, int t
     return out;
 }
 
-double temporal_error(const ImageBuf& a, const ImageBuf& b, const ImageBuf& ra,
-                      const ImageBuf& rb)
-{
-    return mcdenoise::rel_mse(IBA::sub(b, a), IBA::sub(rb, ra));
-}
-
-double flicker(const std::vector<ImageBuf>& frames, const ImageBuf& reference)
-{
-    const ROI roi = reference.roi();
-    const double n = double(frames.size());
-    double total   = 0.0;
-    for (int y = roi.ybegin; y < roi.yend; ++y)
-        for (int x = roi.xbegin; x < roi.xend; ++x)
-            for (int c = 0; c < 3; ++c) {
-                double sum = 0.0, sq = 0.0;
-                for (const ImageBuf& f : frames) {
-                    const double v = f.getchannel(x, y, 0, c);
-                    sum += v;
-                    sq += v * v;
-                }
-                const double r   = reference.getchannel(x, y, 0, c);
-                const double var = (sq - sum * sum / n) / (n - 1.0);
-                total += var / (r * r + mcdenoise::rel_mse_epsilon);
-            }
-    return total / (double(roi.npixels()) * 3.0);
-}
-
 ImageBuf pixel_mask(const ImageBuf& like, const std::function<bool(int, int)>& keep)
 {
     const ROI roi = like.roi();

@@ -48,15 +48,6 @@ OIIO::ImageBuf cross_frame(const Shot& shot, int t, int n, bool motion, int nthr
 OIIO::ImageBuf baseline(const Shot& shot, const std::vector<OIIO::ImageBuf>& denoised, int t,
                         int n);
 
-/// Temporal error: the relMSE of `b - a` (two consecutive frames) against
-/// the references' `rb - ra`.
-double temporal_error(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b,
-                      const OIIO::ImageBuf& ra, const OIIO::ImageBuf& rb);
-
-/// Flicker of a static shot: the mean over pixels and colour channels of
-/// the sample variance across `frames` over (reference^2 + 0.01).
-double flicker(const std::vector<OIIO::ImageBuf>& frames, const OIIO::ImageBuf& reference);
-
 /// A one-channel mask over `like`'s data window: 1 where `keep(x, y)`.
 OIIO::ImageBuf pixel_mask(const OIIO::ImageBuf& like, const std::function<bool(int, int)>& keep);
 

@@ -43,30 +43,34 @@ std::vector<MethodFigures*> members(ShotFigures& f)
     return { &f.raw, &f.per_frame, &f.baseline, &f.cross, &f.cross_still };
 }
 
-// Each method's images of the evaluated frames against `refs`, the region
-// relMSE over `masks` (one per evaluated frame, or none), the flicker
-// around `refs[0]` when `still`.
+// Each method's images of the evaluated frames against `refs`
+// (sequence_metrics.h), the region relMSE over `masks` (one per evaluated
+// frame, or none), and the flicker when `still`.
 void measure(ShotFigures& f, const Shot& shot, const std::vector<ImageBuf>& refs,
              const std::vector<ImageBuf>& masks, bool still = false)
 {
     const Methods m = make_methods(shot, f.n);
     const std::vector<MethodFigures*> out = members(f);
+    std::vector<const ImageBuf*> ref_frames;
+    for (const ImageBuf& r : refs)
+        ref_frames.push_back(&r);
     for (size_t k = 0; k < m.all.size(); ++k) {
         std::vector<ImageBuf> images;
         for (int t : f.evaluated)
             images.push_back(m.all[k](t));
+        std::vector<const ImageBuf*> frames;
+        for (const ImageBuf& img : images)
+            frames.push_back(&img);
+        const mcdenoise::SequenceComparison c = mcdenoise::compare_sequence(frames, ref_frames);
         MethodFigures& mf = *out[k];
-        for (size_t i = 0; i < images.size(); ++i) {
-            mf.frame_rel_mse.push_back(mcdenoise::rel_mse(images[i], refs[i]));
-            mf.rel_mse += mf.frame_rel_mse.back() / double(images.size());
-            if (!masks.empty())
-                mf.region += masked_rel_mse(images[i], refs[i], masks[i]) / double(images.size());
-            if (i > 0)
-                mf.temporal += temporal_error(images[i - 1], images[i], refs[i - 1], refs[i])
-                               / double(images.size() - 1);
-        }
+        mf.frame_rel_mse  = c.frame_rel_mse;
+        mf.rel_mse        = c.mean_rel_mse;
+        if (images.size() > 1)
+            mf.temporal = c.temporal_error;
         if (still)
-            mf.flicker = flicker(images, refs.front());
+            mf.flicker = c.flicker;
+        for (size_t i = 0; i < images.size() && !masks.empty(); ++i)
+            mf.region += masked_rel_mse(images[i], refs[i], masks[i]) / double(images.size());
         f.pictures.push_back(images.back());
     }
     f.pictures.push_back(refs.back());
