@@ -5,7 +5,6 @@
 
 #include "denoise_frame.h"
 #include "energy_outliers.h"
-#include "feature_regression.h"
 #include "feature_field.h"
 #include "layer_channels.h"
 #include "operation.h"
@@ -165,7 +164,6 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begi
         frame.guides.variance = &frame.variance;
     }
     frame.strength = measured ? denoise_measured_strength : denoise_estimated_strength;
-    frame.original = &beauty;
     return true;
 }
 
@@ -183,7 +181,9 @@ bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
     DenoiseFrame frame;
     if (!prepare_denoise_frame(dst, beauty, layer_begin, guides, denoise_region(beauty, roi),
                                nthreads, frame)
-        || !regression_average(dst, frame, roi, nthreads))
+        || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
+                    denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
+                    nthreads))
         return false;
     if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
                           premultiplied_alpha(beauty, layer_begin), nthreads))

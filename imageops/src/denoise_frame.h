@@ -23,7 +23,6 @@ struct DenoiseFrame {
     OIIO::ImageBuf variance;  ///< when not given as a guide
     Guides guides;            ///< the guides the average reads (variance set)
     float strength = 0.0f;    ///< the NL-means strength the variance calls for
-    const OIIO::ImageBuf* original = nullptr;
 };
 
 /// `denoise`'s steps before the average on `beauty` over `region` (all its
