@@ -47,27 +47,26 @@ const Param factor_param = { "FACTOR", ParamType::number, "times the 75th-percen
 const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)",
                              0, mcdenoise::max_nlmeans_search_radius };
 
-/// The guides the feature-guided filters weigh by, when present (the
-/// variance guide only steers the filters with a colour-noise weight).
-const std::vector<Role> feature_roles = { Role::id, Role::normal, Role::depth, Role::albedo };
-const std::vector<Role> feature_and_variance_roles = { Role::id, Role::normal, Role::depth, Role::albedo,
-                                                       Role::variance };
-/// Every guide `denoise` can use.
-const std::vector<Role> denoise_roles = { Role::normal, Role::depth,  Role::albedo,
-                                          Role::variance, Role::half_a, Role::half_b };
+/// The roles whose guides fill the `Guides` fields of `guides`, in the
+/// role table's order.
+std::vector<Role> roles_of(mcdenoise::GuideMask guides)
+{
+    std::vector<Role> roles;
+    for (const RoleInfo& info : role_table())
+        if (guides & mcdenoise::guide_bit(info.argument))
+            roles.push_back(info.role);
+    return roles;
+}
 
-/// The present guides of `images` in the library's form.
+/// The present guides of `images` in the library's form: each role whose
+/// argument names a `Guides` field fills it.
 mcdenoise::Guides library_guides(const Guides& images)
 {
     mcdenoise::Guides guides;
-    guides.object_id = present(images, Role::id);
-    guides.normal    = present(images, Role::normal);
-    guides.depth     = present(images, Role::depth);
-    guides.albedo    = present(images, Role::albedo);
-    guides.variance  = present(images, Role::variance);
-    guides.half_a    = present(images, Role::half_a);
-    guides.half_b    = present(images, Role::half_b);
-    guides.motion    = present(images, Role::motion);
+    for (const RoleInfo& info : role_table())
+        for (const mcdenoise::GuideField& field : mcdenoise::guide_fields)
+            if (std::string_view(field.name) == info.argument)
+                guides.*field.member = present(images, info.role);
     return guides;
 }
 
@@ -207,7 +206,7 @@ const std::vector<Command>& command_table()
                                                 mcdenoise::default_cross_bilateral_sigma_color, {}, {},
                                                 c.nthreads);
           },
-          feature_roles },
+          roles_of(mcdenoise::cross_bilateral_guides) },
         { "atrous", "atrous", "atrous.h", { iterations_param }, {},
           "Edge-avoiding a-trous wavelet filter with SVGF's variance-guided luminance weight (variance "
           "estimated from the beauty when no variance guide is present) and the feature weight.",
@@ -216,7 +215,7 @@ const std::vector<Command>& command_table()
               return mcdenoise::atrous(c.dst, c.beauty, feature_guides(c), c.integer(0),
                                        mcdenoise::default_atrous_sigma_luminance, {}, {}, c.nthreads);
           },
-          feature_and_variance_roles },
+          roles_of(mcdenoise::atrous_guides) },
         { "nlmeans", "nlmeans", "nlmeans.h", { search_param }, {},
           format("Non-local means with variance-normalised {0}x{0} patch distances (strength {1}) and "
                  "the feature weight.",
@@ -227,14 +226,14 @@ const std::vector<Command>& command_table()
                                         mcdenoise::default_nlmeans_patch_radius,
                                         mcdenoise::default_nlmeans_strength, {}, {}, c.nthreads);
           },
-          feature_and_variance_roles },
+          roles_of(mcdenoise::nlmeans_guides) },
         { "denoise", "denoise", "denoise.h", {}, {},
           "The one-call denoiser: takes the firefly excess out, runs non-local means with the "
           "variance (from the variance guide, the halves, or estimated) and the feature weight of "
           "every guide present, and spreads the excess back over its neighbourhood, so the frame "
           "keeps its energy.",
           "mcdtool render.exr --denoise -o clean.exr",
-          denoise_call, denoise_roles, true },
+          denoise_call, roles_of(mcdenoise::denoise_guides), true },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
           format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
                  "{0}x{0} neighbours (of the same object when an id guide is present).",
@@ -244,7 +243,7 @@ const std::vector<Command>& command_table()
               return mcdenoise::clamp_fireflies(c.dst, c.beauty, feature_guides(c), c.number(0),
                                                 mcdenoise::default_firefly_radius, {}, c.nthreads);
           },
-          { Role::id } },
+          roles_of(mcdenoise::clamp_fireflies_guides) },
         { "demodulate", "demodulate", "demodulate.h", {}, { Role::albedo },
           format("Divide the colour channels by albedo + {} so the next filters do not blur texture; "
                  "undo with --remodulate.",

@@ -29,7 +29,7 @@ void print_error(const std::string& message)
 /// Runs every frame (or the single image); returns the exit status.
 int run(const Options& options)
 {
-    const std::vector<std::optional<int>> frames = frames_to_run(options);
+    const std::vector<std::optional<int>> frames = frames_to_run(options.frames);
     RunStats stats;
     Progress progress(frames.size());
     stats.show_progress_in(&progress);

@@ -213,8 +213,9 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
             continue;
         }
         std::string path = path_of(step.output);
-        OutputImage output = compose_output(input, written_channels(found.beauty, layers),
-                                            written_pixels(current, layers), options, path);
+        OutputImage output = compose_output(input, inputs.files->integer_channels(input),
+                                            written_channels(found.beauty, layers), written_pixels(current, layers),
+                                            { options.data_format, options.compression }, path);
         if (!parts.empty() && writes_parts(path))
             write_parts(batch, path, parts, output.pixels, options, "-o");
         else
@@ -231,7 +232,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         print_comparison(path_of(options.compare), before, current, reference, options.threads);
     if (!options.preview.empty()) {
         write_preview(path_of(options.preview), before, current,
-                      options.compare.empty() ? nullptr : &reference, options, batch);
+                      options.compare.empty() ? nullptr : &reference, options.display, batch);
         if (options.verbose)
             std::printf("mcdtool: --preview %s\n", path_of(options.preview).c_str());
     }

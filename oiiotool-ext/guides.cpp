@@ -43,15 +43,16 @@ bool cryptomatte_guide(const ImageSpec& spec, Role role, const std::vector<int>&
     return role == Role::id && indices.size() == 1 && is_cryptomatte_id_channel(spec, indices[0]);
 }
 
-/// Channels `indices` of `file` as the guide of `role`: Cryptomatte hashes
-/// and ids stored as integers as whole-number ids, anything else as float.
-ImageBuf guide_image(const ImageBuf& file, Role role, const std::vector<int>& indices)
+/// Channels `indices` of `file` (read by `files`) as the guide of `role`:
+/// Cryptomatte hashes and ids stored as integers as whole-number ids,
+/// anything else as float.
+ImageBuf guide_image(ImageFiles& files, const ImageBuf& file, Role role, const std::vector<int>& indices)
 {
     if (cryptomatte_guide(file.spec(), role, indices))
         return cryptomatte_ids(file, indices[0]);
     const bool ids = role == Role::id || role == Role::reflid;
     if (ids && indices.size() == 1 && stored_as_integers(file, indices[0]))
-        return read_stored_channel(file, indices[0]);
+        return files.integer_channels(file).at(indices[0]);
     return extract_channels(file, indices);
 }
 
@@ -128,7 +129,7 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
     const std::set<Role> used = roles_used(options);
     for (const auto& [role, indices] : found.roles) {
         if (used.count(role))
-            guides.images[role] = guide_image(input, role, indices);
+            guides.images[role] = guide_image(files, input, role, indices);
         guides.sources[role] = guide_source(input_path, input.spec(), role, indices);
     }
     for (const AovRequest& aov : options.aovs) {
@@ -146,7 +147,7 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
         require_channel_count(info, int(indices.size()), beauty_channels, channel_names(file.spec(), indices),
                               context);
         require_same_display_window(file, input, context);
-        ImageBuf guide = guide_image(file, aov.role, indices);
+        ImageBuf guide = guide_image(files, file, aov.role, indices);
         require_coverage(guide, input, context);
         guides.images[aov.role] = std::move(guide);
         guides.sources[aov.role] = guide_source(path, file.spec(), aov.role, indices);

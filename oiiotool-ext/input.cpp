@@ -12,6 +12,7 @@
 #include <OpenImageIO/strutil.h>
 
 #include <algorithm>
+#include <memory>
 #include <cstdio>
 
 namespace mcdtool {
@@ -19,6 +20,30 @@ namespace mcdtool {
 using OIIO::Strutil::fmt::format;
 
 namespace {
+
+/// Every channel of `image` that its file stores as integers, read in its
+/// stored type from one opening of the file.
+IntegerChannels read_integer_channels(const ImageBuf& image)
+{
+    IntegerChannels channels;
+    std::unique_ptr<OIIO::ImageInput> in;
+    const std::string path = image.name();
+    for (int c = 0; c < image.nchannels(); ++c) {
+        if (!stored_as_integers(image, c))
+            continue;
+        const OIIO::TypeDesc type = image.nativespec().channelformat(c);
+        OIIO::ImageSpec spec = extracted_spec(image.spec(), { c });
+        spec.set_format(type);
+        ImageBuf stored(spec, OIIO::InitializePixels::No);
+        if (!in)
+            in = OIIO::ImageInput::open(path);
+        if (!in || !in->read_image(0, 0, c, c + 1, type, stored.localpixels()))
+            throw RunError(format("cannot read channel {} of '{}': {}", spec.channelnames[0], path,
+                                  one_line(in ? in->geterror() : OIIO::geterror())));
+        channels.emplace(c, std::move(stored));
+    }
+    return channels;
+}
 
 /// The one-line reason `image` could not be read.
 std::string read_error(const ImageBuf& image)
@@ -80,20 +105,6 @@ bool stored_as_integers(const ImageBuf& image, int c)
     return type.basetype >= OIIO::TypeDesc::UINT8 && type.basetype <= OIIO::TypeDesc::INT64;
 }
 
-ImageBuf read_stored_channel(const ImageBuf& image, int c)
-{
-    const std::string path = image.name();
-    const OIIO::TypeDesc type = image.nativespec().channelformat(c);
-    OIIO::ImageSpec spec = extracted_spec(image.spec(), { c });
-    spec.set_format(type);
-    ImageBuf stored(spec, OIIO::InitializePixels::No);
-    auto in = OIIO::ImageInput::open(path);
-    if (!in || !in->read_image(0, 0, c, c + 1, type, stored.localpixels()))
-        throw RunError(format("cannot read channel {} of '{}': {}", spec.channelnames[0], path,
-                              one_line(in ? in->geterror() : OIIO::geterror())));
-    return stored;
-}
-
 const ImageBuf& ImageFiles::get(const std::string& path, std::string_view context)
 {
     auto found = images_.find(path);
@@ -103,6 +114,14 @@ const ImageBuf& ImageFiles::get(const std::string& path, std::string_view contex
     ImageBuf image = read_image(path, context, memory_limit_);
     stats_.add_read(timer.seconds());
     return images_.emplace(path, std::move(image)).first->second;
+}
+
+const IntegerChannels& ImageFiles::integer_channels(const ImageBuf& image)
+{
+    auto found = integers_.find(&image);
+    if (found != integers_.end())
+        return found->second;
+    return integers_.emplace(&image, read_integer_channels(image)).first->second;
 }
 
 }  // namespace mcdtool

@@ -31,11 +31,10 @@ void warn_if_display_referred(const ImageBuf& image, std::string_view context);
 /// (which reading as float scaled to [0, 1]).
 bool stored_as_integers(const ImageBuf& image, int c);
 
-/// Channel `c` of the file `image` was read from, read again in the type
-/// the file stores it in (ids in an integer channel, such as Arnold's ID
-/// pass, are the whole numbers stored), with `image`'s windows and
-/// metadata. Throws RunError naming the file.
-ImageBuf read_stored_channel(const ImageBuf& image, int c);
+/// The channels of an image that its file stores as integers, by channel
+/// index, each in that integer type (ids in an integer channel, such as
+/// Arnold's ID pass, are the whole numbers stored).
+using IntegerChannels = std::map<int, ImageBuf>;
 
 /// The images read for one frame, by path.
 class ImageFiles {
@@ -43,11 +42,17 @@ public:
     ImageFiles(RunStats& stats, uint64_t memory_limit) : stats_(stats), memory_limit_(memory_limit) {}
     /// The image at `path`, read on first use (timed as I/O).
     const ImageBuf& get(const std::string& path, std::string_view context);
+    /// The channels the file of `image` (an image `get` returned) stores as
+    /// integers, with `image`'s windows and metadata: read on first use,
+    /// with one more opening of the file, then kept. Throws RunError naming
+    /// the file.
+    const IntegerChannels& integer_channels(const ImageBuf& image);
 
 private:
     RunStats& stats_;
     uint64_t memory_limit_;
     std::map<std::string, ImageBuf> images_;
+    std::map<const ImageBuf*, IntegerChannels> integers_;
 };
 
 }  // namespace mcdtool

@@ -31,6 +31,16 @@ struct AovRequest {
     std::string typed;     ///< the argument as typed, for messages
 };
 
+/// How --preview turns scene-linear pixels into display values.
+struct DisplayChoice {
+    std::string ocio_config;  ///< --ocio-config (empty: $OCIO or sRGB)
+    std::string display;      ///< --display (empty: config default)
+    std::string view;         ///< --view (empty: display default)
+
+    /// True if any of the three was given.
+    bool given() const { return !ocio_config.empty() || !display.empty() || !view.empty(); }
+};
+
 /// What the program was asked to do.
 enum class Mode { run, help, help_markdown, version };
 
@@ -48,9 +58,7 @@ struct Options {
     std::string compression;         ///< --compression (empty: the input's)
     std::string compare;             ///< --compare REF
     std::string preview;             ///< --preview FILE.png
-    std::string ocio_config;         ///< --ocio-config (empty: $OCIO or sRGB)
-    std::string display;             ///< --display (empty: config default)
-    std::string view;                ///< --view (empty: display default)
+    DisplayChoice display;           ///< --ocio-config, --display, --view
     int threads = 0;
     uint64_t memory_limit_mb = 0;    ///< --memory-limit (0: physical memory)
     bool verbose = false;

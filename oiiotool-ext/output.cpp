@@ -205,16 +205,16 @@ ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, con
     return merged;
 }
 
-/// The spec to write for `input`, with -d and --compression applied.
-ImageSpec output_spec(const ImageBuf& input, const Options& options)
+/// The spec to write for `input`, with `format` applied.
+ImageSpec output_spec(const ImageBuf& input, const OutputFormat& format)
 {
     ImageSpec spec = input.nativespec();
-    if (!options.data_format.empty()) {
-        spec.set_format(TypeDesc(options.data_format));
+    if (!format.data_format.empty()) {
+        spec.set_format(TypeDesc(format.data_format));
         spec.channelformats.clear();
     }
-    if (!options.compression.empty())
-        spec.attribute("compression", options.compression);
+    if (!format.compression.empty())
+        spec.attribute("compression", format.compression);
     return spec;
 }
 
@@ -231,17 +231,17 @@ bool keeps_named_channels(const std::string& path)
 
 }  // namespace
 
-OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
-                           const Options& options, const std::string& path)
+OutputImage compose_output(const ImageBuf& input, const IntegerChannels& integers, const std::vector<int>& beauty,
+                           const ImageBuf& result, const OutputFormat& format, const std::string& path)
 {
     OutputImage output;
-    output.spec = output_spec(input, options);
+    output.spec = output_spec(input, format);
     if (input.nchannels() <= portable_channels || keeps_named_channels(path)) {
         output.pixels = merge_result(input, beauty, result);
-        for (int c = 0; c < input.nchannels(); ++c)
+        for (const auto& [c, stored] : integers)
             if (!output.spec.channelformats.empty() && output.spec.channelformat(c).size() >= 4
-                && stored_as_integers(input, c) && std::find(beauty.begin(), beauty.end(), c) == beauty.end())
-                output.stored[c] = read_stored_channel(input, c);
+                && std::find(beauty.begin(), beauty.end(), c) == beauty.end())
+                output.stored[c] = stored;
         return output;
     }
     output.beauty_only = true;

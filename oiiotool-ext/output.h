@@ -8,7 +8,7 @@
 // final path, never the temp file.
 #pragma once
 
-#include "options.h"
+#include "input.h"
 #include "runstats.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -61,6 +61,12 @@ private:
     std::vector<Pending> pending_;
 };
 
+/// What -d and --compression change of the input file's spec.
+struct OutputFormat {
+    std::string data_format;  ///< -d (empty: the input's)
+    std::string compression;  ///< --compression (empty: the input's)
+};
+
 /// What one -o writes: the file spec and its float pixels.
 struct OutputImage {
     ImageSpec spec;
@@ -74,13 +80,13 @@ struct OutputImage {
 /// The output for `path`: the input with channels `beauty` replaced by the
 /// channels of `result` (same data window), in the spec of the input file
 /// (channels, per-channel pixel types, metadata, compression, data and
-/// display windows) with -d and --compression applied; channels the input
-/// stores as 32-bit integers pass through exactly. A format that holds at
+/// display windows) with `format` applied; channels the input stores as
+/// 32-bit integers (`integers`, the input's) pass through exactly. A format that holds at
 /// most four channels (PNG, JPEG) or does not store channel names (TIFF,
 /// DPX: the AOVs would come back as "channel4", ...) gets the beauty
 /// channels only.
-OutputImage compose_output(const ImageBuf& input, const std::vector<int>& beauty, const ImageBuf& result,
-                           const Options& options, const std::string& path);
+OutputImage compose_output(const ImageBuf& input, const IntegerChannels& integers, const std::vector<int>& beauty,
+                           const ImageBuf& result, const OutputFormat& format, const std::string& path);
 
 /// Makes `path` ready to be written by `option` ("-o", "--preview") before
 /// any work: its folder is created if missing (as renderers do), and an

@@ -41,7 +41,7 @@ std::optional<ImageSpec> header(const std::string& path)
 /// The first frame whose input exists.
 std::optional<std::optional<int>> first_readable_frame(const Options& options)
 {
-    for (const std::optional<int>& frame : frames_to_run(options))
+    for (const std::optional<int>& frame : frames_to_run(options.frames))
         if (OIIO::Filesystem::exists(frame ? frame_path(options.input, *frame) : options.input))
             return frame;
     return std::nullopt;
@@ -148,13 +148,13 @@ void warn_foreign_motion(const Options& options, std::optional<int> frame)
 
 }  // namespace
 
-std::vector<std::optional<int>> frames_to_run(const Options& options)
+std::vector<std::optional<int>> frames_to_run(const std::string& frame_list)
 {
     std::vector<std::optional<int>> frames;
-    if (options.frames.empty())
+    if (frame_list.empty())
         frames.push_back(std::nullopt);
     else
-        for (int frame : parse_frame_list(options.frames))
+        for (int frame : parse_frame_list(frame_list))
             frames.push_back(frame);
     return frames;
 }
@@ -164,9 +164,8 @@ void check_arguments(const Options& options)
     check_parameters(options);
     check_light_passes(options);
     try {
-        if (!options.preview.empty() || !options.display.empty() || !options.view.empty()
-            || !options.ocio_config.empty())
-            check_display(options);
+        if (!options.preview.empty() || options.display.given())
+            check_display(options.display);
         check_temporal(options);
         if (auto frame = first_readable_frame(options)) {
             check_selectors(options, *frame);

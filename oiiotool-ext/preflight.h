@@ -10,13 +10,14 @@
 #include "options.h"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace mcdtool {
 
-/// The frames `options` runs: its --frames list, or nullopt for the single
-/// input image.
-std::vector<std::optional<int>> frames_to_run(const Options& options);
+/// The frames a run takes: those of `frame_list` (--frames), or nullopt for
+/// the single input image when it is empty.
+std::vector<std::optional<int>> frames_to_run(const std::string& frame_list);
 
 /// Throws UsageError naming the option unless every argument value that
 /// can be checked before reading pixels holds. Headers are read from the

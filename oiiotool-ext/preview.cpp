@@ -72,31 +72,31 @@ void require_known(const char* option, const std::string& name, const std::vecto
 /// config's defaults if not given), checked against the config; nullopt
 /// when no config is asked for and the built-in sRGB transform serves.
 /// Throws RunError for an unloadable config or an unknown name.
-std::optional<std::pair<std::string, std::string>> display_view(OIIO::ColorConfig& config, const Options& options)
+std::optional<std::pair<std::string, std::string>> display_view(OIIO::ColorConfig& config, const DisplayChoice& choice)
 {
-    bool have_config = !options.ocio_config.empty() || std::getenv("OCIO");
+    bool have_config = !choice.ocio_config.empty() || std::getenv("OCIO");
     if (!have_config) {
         config.geterror();  // no config asked for: the built-in transforms serve
-        if (!options.display.empty() || !options.view.empty())
+        if (!choice.display.empty() || !choice.view.empty())
             throw RunError("--display / --view : need an OCIO config (--ocio-config FILE or $OCIO)");
         return std::nullopt;
     }
     if (config.has_error())
         throw RunError(format("--ocio-config : cannot load '{}': {}",
-                              options.ocio_config.empty() ? "$OCIO" : options.ocio_config,
+                              choice.ocio_config.empty() ? "$OCIO" : choice.ocio_config,
                               one_line(config.geterror())));
-    std::string name = options.display.empty() ? config.getDefaultDisplayName() : options.display;
+    std::string name = choice.display.empty() ? config.getDefaultDisplayName() : choice.display;
     require_known("--display", name, config.getDisplayNames());
-    std::string view = options.view.empty() ? config.getDefaultViewName(name) : options.view;
+    std::string view = choice.view.empty() ? config.getDefaultViewName(name) : choice.view;
     require_known("--view", view, config.getViewNames(name));
     return std::make_pair(name, view);
 }
 
 /// `canvas` converted from scene-linear to display values.
-ImageBuf to_display(const ImageBuf& canvas, const Options& options)
+ImageBuf to_display(const ImageBuf& canvas, const DisplayChoice& choice)
 {
-    OIIO::ColorConfig config(options.ocio_config);
-    auto chosen = display_view(config, options);
+    OIIO::ColorConfig config(choice.ocio_config);
+    auto chosen = display_view(config, choice);
     ImageBuf display;
     bool ok = false;
     if (chosen) {
@@ -113,19 +113,19 @@ ImageBuf to_display(const ImageBuf& canvas, const Options& options)
 
 }  // namespace
 
-void check_display(const Options& options)
+void check_display(const DisplayChoice& choice)
 {
-    OIIO::ColorConfig config(options.ocio_config);
-    display_view(config, options);
+    OIIO::ColorConfig config(choice.ocio_config);
+    display_view(config, choice);
 }
 
 void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,
-                   const ImageBuf* reference, const Options& options, OutputBatch& batch)
+                   const ImageBuf* reference, const DisplayChoice& choice, OutputBatch& batch)
 {
     std::vector<const ImageBuf*> images = { &before, &after };
     if (reference)
         images.push_back(reference);
-    ImageBuf display = to_display(side_by_side(images), options);
+    ImageBuf display = to_display(side_by_side(images), choice);
     OIIO::ImageSpec spec = display.spec();
     spec.set_format(OIIO::TypeDesc::UINT8);
     batch.write(path, spec, display, "--preview");

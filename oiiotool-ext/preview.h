@@ -15,11 +15,11 @@ namespace mcdtool {
 
 /// Throws RunError unless the OCIO config (--ocio-config or $OCIO) loads
 /// and has the display and view --preview would use (--display, --view).
-void check_display(const Options& options);
+void check_display(const DisplayChoice& choice);
 
 /// Adds the preview of `before` | `after` (| `reference` if not null) to
-/// `batch` at `path`, as 8-bit display values.
+/// `batch` at `path`, as 8-bit display values through `choice`.
 void write_preview(const std::string& path, const ImageBuf& before, const ImageBuf& after,
-                   const ImageBuf* reference, const Options& options, OutputBatch& batch);
+                   const ImageBuf* reference, const DisplayChoice& choice, OutputBatch& batch);
 
 }  // namespace mcdtool

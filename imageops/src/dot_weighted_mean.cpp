@@ -119,9 +119,7 @@ int dot_weighted_pass(const SeparableSource& src, const NormalPlanes& vectors, i
         for (int c = 0; c < nc; ++c) {
             const double num = dot(v, sums + size_t(3 * c) * n, size_t(n));
             const double den = dot(v, sums + size_t(3 * (src.masked ? nc + c : per)) * n, size_t(n));
-            const bool any   = den > 0.0;
-            o[c]             = any ? float(num / den) : 0.0f;
-            empty += !any;
+            o[c]             = masked_mean(num, den, empty);
         }
     }
     return empty;

@@ -85,9 +85,7 @@ inline int mean_from_columns(const SeparableSource& src, int x, int first,
             if (src.masked)
                 den += kx[i] * sums[i * per + nc + c];
         }
-        const bool any = den > 0.0;
-        out[c]         = any ? float(num / den) : 0.0f;
-        empty += !any;
+        out[c] = masked_mean(num, den, empty);
     }
     return empty;
 }
@@ -219,9 +217,7 @@ int guided_mean_lanes(const SeparableSource& src, const Rule& rule, int xb, int 
         for (int c = 0; c < nc; ++c) {
             const double num = window[c * n + i];
             const double den = src.masked ? window[(nc + c) * n + i] : total[i];
-            const bool any   = den > 0.0;
-            out[c]           = any ? float(num / den) : 0.0f;
-            empty += !any;
+            out[c]           = masked_mean(num, den, empty);
         }
     return empty;
 }

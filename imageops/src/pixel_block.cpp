@@ -65,7 +65,7 @@ PixelBlock owned_block(const ROI& region, int nchannels)
     out.region     = region;
     out.nchannels  = nchannels;
     out.row_stride = std::ptrdiff_t(region.width()) * nchannels;
-    out.owned.resize(size_t(out.row_stride) * region.height());
+    out.owned.resize(plane_size(region) * size_t(nchannels));
     out.data = out.owned.data();
     return out;
 }

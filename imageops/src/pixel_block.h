@@ -32,13 +32,15 @@ struct PixelBlock {
     /// Pointer to channel 0 of pixel (x, y), which must lie in `region`.
     const float* pixel(int x, int y) const
     {
-        return data + (y - region.ybegin) * row_stride
-               + std::ptrdiff_t(x - region.xbegin) * nchannels;
+        return data + interleaved_offset(region, x, y, row_stride, nchannels);
     }
     /// Pointer to the first pixel of row `y`.
     const float* row(int y) const { return pixel(region.xbegin, y); }
     /// Row `y` of a block that owns its pixels, for writing them.
-    float* owned_row(int y) { return owned.data() + (y - region.ybegin) * row_stride; }
+    float* owned_row(int y)
+    {
+        return owned.data() + interleaved_offset(region, region.xbegin, y, row_stride, nchannels);
+    }
     int width() const { return region.width(); }
     int height() const { return region.height(); }
 };
@@ -65,6 +67,18 @@ constexpr float max_summed_magnitude = 0x1p100f;
 inline float summable(float v)
 {
     return std::isfinite(v) ? std::clamp(v, -max_summed_magnitude, max_summed_magnitude) : 0.0f;
+}
+
+/// A channel's weighted mean over the finite values of its window: `num /
+/// den`, the weighted sum of those values over the weights that contributed,
+/// or 0 when none did (an empty window, counted in `empty`). The one rule
+/// every masked mean ends with.
+template<class Sum, class Count>
+inline float masked_mean(Sum num, Sum den, Count& empty)
+{
+    const bool any = den > Sum(0);
+    empty += !any;
+    return any ? float(num / den) : 0.0f;
 }
 
 /// True if any value of `block` is NaN or infinite.

@@ -2,8 +2,9 @@
 // `Plane<T>`, one value per pixel in rows of the region's width (ids,
 // depths, change flags, window sides), and `Planes<T>`, several such
 // planes over one region (colour channels, feature dimensions, summed
-// values) with an optional mask of which values are finite. Every offset
-// into them is computed here, so hot loops take contiguous rows from
+// values) with an optional mask of which values are finite; and the offsets
+// of interleaved pixels (pixel_block.h, operation.h). Every offset into them
+// is computed here, so hot loops take contiguous rows from
 // `from` or `row` and index them by column.
 #pragma once
 
@@ -21,6 +22,15 @@ namespace mcdenoise {
 inline size_t pixel_offset(const OIIO::ROI& region, int x, int y)
 {
     return size_t(y - region.ybegin) * size_t(region.width()) + size_t(x - region.xbegin);
+}
+
+/// The index of the first value of pixel (x, y), which must lie in
+/// `region`, in interleaved rows: `pixel_stride` values a pixel, rows
+/// `row_stride` values apart (the layout of an image's own pixels).
+inline std::ptrdiff_t interleaved_offset(const OIIO::ROI& region, int x, int y, std::ptrdiff_t row_stride,
+                                         std::ptrdiff_t pixel_stride)
+{
+    return (y - region.ybegin) * row_stride + std::ptrdiff_t(x - region.xbegin) * pixel_stride;
 }
 
 /// The pixel count of `region`: the length of one of its planes.

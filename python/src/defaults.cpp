@@ -1,15 +1,31 @@
 // defaults.cpp: the library's named defaults as constants of the module
 // (mcdenoise.default_nlmeans_strength, ...), the values the bound functions
-// take when an argument is left out.
+// take when an argument is left out, and its guide vocabulary (the names of
+// the `guides` keys, the guides each feature-guided function uses).
 #include "defaults.h"
 
 #include <mcdenoise/mcdenoise.h>
 
 namespace mcdpy {
 
+namespace mcd = mcdenoise;
+
+namespace {
+
+/// The names of the `Guides` fields in `guides`, in declaration order.
+py::tuple guide_names(mcd::GuideMask guides)
+{
+    py::list names;
+    for (const mcd::GuideField& field : mcd::guide_fields)
+        if (guides & field.bit)
+            names.append(field.name);
+    return py::tuple(names);
+}
+
+}  // namespace
+
 void bind_defaults(py::module_& m)
 {
-    namespace mcd = mcdenoise;
     m.attr("default_window_size") = mcd::default_window_size;
     m.attr("dof_image_depth_range") = mcd::dof_image_depth_range;
     m.attr("default_cross_bilateral_size") = mcd::default_cross_bilateral_size;
@@ -24,6 +40,14 @@ void bind_defaults(py::module_& m)
     m.attr("default_firefly_radius") = mcd::default_firefly_radius;
     m.attr("default_demodulate_epsilon") = mcd::default_demodulate_epsilon;
     m.attr("max_window_size") = mcd::max_window_size;
+    m.attr("guide_fields") = guide_names(~0u);
+    py::dict used;
+    used["cross_bilateral"] = guide_names(mcd::cross_bilateral_guides);
+    used["atrous"] = guide_names(mcd::atrous_guides);
+    used["nlmeans"] = guide_names(mcd::nlmeans_guides);
+    used["clamp_fireflies"] = guide_names(mcd::clamp_fireflies_guides);
+    used["denoise"] = guide_names(mcd::denoise_guides);
+    m.attr("guides_used") = used;
 }
 
 }  // namespace mcdpy

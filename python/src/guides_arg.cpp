@@ -7,12 +7,12 @@ namespace mcdpy {
 
 const std::map<std::string, const ImageBuf* mcdenoise::Guides::*>& guide_fields()
 {
-    using G = mcdenoise::Guides;
-    static const std::map<std::string, const ImageBuf* G::*> fields = {
-        { "object_id", &G::object_id }, { "normal", &G::normal },     { "depth", &G::depth },
-        { "albedo", &G::albedo },       { "variance", &G::variance }, { "half_a", &G::half_a },
-        { "half_b", &G::half_b },       { "motion", &G::motion },
-    };
+    static const auto fields = [] {
+        std::map<std::string, const ImageBuf* mcdenoise::Guides::*> by_name;
+        for (const mcdenoise::GuideField& field : mcdenoise::guide_fields)
+            by_name.emplace(field.name, field.member);
+        return by_name;
+    }();
     return fields;
 }
 

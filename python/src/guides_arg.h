@@ -26,7 +26,8 @@ private:
     mcdenoise::Guides guides_;
 };
 
-/// The field names of mcdenoise::Guides, with the member each one sets.
+/// The field names of mcdenoise::Guides (`mcdenoise::guide_fields`), with
+/// the member each one sets.
 const std::map<std::string, const ImageBuf* mcdenoise::Guides::*>& guide_fields();
 
 }  // namespace mcdpy

@@ -16,11 +16,16 @@ from conftest import frame_file, mcdtool, random_image, read_pixels
 
 HEADERS = Path(__file__).resolve().parents[2] / "imageops" / "include" / "mcdenoise"
 
-#: The Guides fields of a testrender frame with their channels, in the
-#: order of the Guides struct (mcdtool passes every one present).
-FEATURES = [("object_id", ["id"]), ("normal", ["N.X", "N.Y", "N.Z"]), ("depth", ["Z"]),
-            ("albedo", ["albedo.R", "albedo.G", "albedo.B"]), ("variance", ["var.R", "var.G", "var.B"]),
-            ("half_a", ["A.R", "A.G", "A.B"]), ("half_b", ["B.R", "B.G", "B.B"])]
+#: The channels of a testrender frame that hold each Guides field it has.
+FEATURES = {"object_id": ["id"], "normal": ["N.X", "N.Y", "N.Z"], "depth": ["Z"],
+            "albedo": ["albedo.R", "albedo.G", "albedo.B"], "variance": ["var.R", "var.G", "var.B"],
+            "half_a": ["A.R", "A.G", "A.B"], "half_b": ["B.R", "B.G", "B.B"]}
+
+
+def used_guides(function):
+    """The (field, channels) of the guides `function` uses (the library's
+    guides_used, which mcdtool passes), in the order of the Guides struct."""
+    return [(field, FEATURES[field]) for field in mcdenoise.guides_used[function] if field in FEATURES]
 
 #: mcdtool command -> (library function, guide channels by argument (for
 #: `guides`, a list of (field, channels)), keyword parameters).
@@ -40,11 +45,11 @@ CASES = {
     "--dof 4 1": ("dof", {"object_id": ["id"], "depth": ["Z"]}, {"levels": 4, "focus_level": 1}),
     "--dof-range 4 1 1.5 6": ("dof", {"object_id": ["id"], "depth": ["Z"]},
                               {"levels": 4, "focus_level": 1, "depth_near": 1.5, "depth_far": 6.0}),
-    "--cross-bilateral 7": ("cross_bilateral", {"guides": FEATURES[:4]}, {"size": 7}),
-    "--atrous 3": ("atrous", {"guides": FEATURES[:5]}, {"iterations": 3}),
-    "--nlmeans 3": ("nlmeans", {"guides": FEATURES[:5]}, {"search_radius": 3}),
-    "--denoise": ("denoise", {"guides": FEATURES}, {}),
-    "--clamp-fireflies 2": ("clamp_fireflies", {"guides": FEATURES[:1]}, {"factor": 2.0}),
+    "--cross-bilateral 7": ("cross_bilateral", {"guides": used_guides("cross_bilateral")}, {"size": 7}),
+    "--atrous 3": ("atrous", {"guides": used_guides("atrous")}, {"iterations": 3}),
+    "--nlmeans 3": ("nlmeans", {"guides": used_guides("nlmeans")}, {"search_radius": 3}),
+    "--denoise": ("denoise", {"guides": used_guides("denoise")}, {}),
+    "--clamp-fireflies 2": ("clamp_fireflies", {"guides": used_guides("clamp_fireflies")}, {"factor": 2.0}),
     "--demodulate": ("demodulate", {"albedo": ["albedo.R", "albedo.G", "albedo.B"]}, {}),
     "--remodulate": ("remodulate", {"albedo": ["albedo.R", "albedo.G", "albedo.B"]}, {}),
 }
@@ -96,6 +101,18 @@ def test_every_header_function_is_bound_with_its_doc():
         bound = getattr(mcdenoise, name, None)
         assert bound is not None, f"{name} is declared in the headers but not bound"
         assert first_line in bound.__doc__, name
+
+
+def test_guide_vocabulary_is_the_guides_struct():
+    """guide_fields names the fields of features.h's Guides struct, in order,
+    and every name guides_used gives is one of them."""
+    struct = re.search(r"struct Guides \{(.*?)\n\};", (HEADERS / "features.h").read_text(), re.S).group(1)
+    fields = tuple(re.findall(r"const ImageBuf\* (\w+)\s*=", struct))
+    assert fields == mcdenoise.guide_fields
+    assert set(mcdenoise.guides_used) == {"cross_bilateral", "atrous", "nlmeans", "clamp_fireflies", "denoise"}
+    for function, used in mcdenoise.guides_used.items():
+        assert used and set(used) <= set(fields), function
+    assert mcdenoise.guides_used["clamp_fireflies"] == ("object_id",)
 
 
 def test_argument_names_and_defaults_are_the_librarys():

@@ -7,21 +7,41 @@ namespace testfilters {
 
 namespace {
 
+/// A guide of a GuideSet that is a field of the library's `Guides`.
+struct HeldGuide {
+    const char* field;  ///< the field's name in mcdenoise::guide_fields
+    GuideBit bit;
+    ImageBuf GuideSet::*image;
+};
+
+/// The GuideSet guides the feature filters may use.
+constexpr HeldGuide held_guides[] = {
+    { "object_id", needs_id, &GuideSet::object_id }, { "normal", needs_normal, &GuideSet::normal },
+    { "depth", needs_depth, &GuideSet::depth },       { "albedo", needs_albedo, &GuideSet::albedo },
+    { "variance", needs_variance, &GuideSet::variance },
+};
+
 /// The feature filters' view of `g`: every guide that is there.
 mcdenoise::Guides features(const GuideSet& g)
 {
-    auto present = [](const ImageBuf& img) { return img.initialized() ? &img : nullptr; };
     mcdenoise::Guides f;
-    f.object_id = present(g.object_id);
-    f.normal    = present(g.normal);
-    f.depth     = present(g.depth);
-    f.albedo    = present(g.albedo);
-    f.variance  = present(g.variance);
+    for (const HeldGuide& held : held_guides)
+        for (const mcdenoise::GuideField& field : mcdenoise::guide_fields)
+            if (field.bit == mcdenoise::guide_bit(held.field) && (g.*held.image).initialized())
+                f.*field.member = &(g.*held.image);
     return f;
 }
 
-/// The guides the feature filters read.
-constexpr unsigned feature_guides = needs_id | needs_normal | needs_depth | needs_albedo | needs_variance;
+/// The GuideBit flags of the guides in the library's `used` that a GuideSet
+/// holds.
+unsigned needs(mcdenoise::GuideMask used)
+{
+    unsigned bits = 0;
+    for (const HeldGuide& held : held_guides)
+        if (used & mcdenoise::guide_bit(held.field))
+            bits |= held.bit;
+    return bits;
+}
 
 }  // namespace
 
@@ -77,23 +97,23 @@ const std::vector<FilterRow>& filter_table()
               return mcdenoise::dof(d, b, g.object_id, g.depth, s, s / 2, mcdenoise::dof_image_depth_range,
                                     mcdenoise::dof_image_depth_range, r, n);
           } },
-        { "cross_bilateral", feature_guides,
+        { "cross_bilateral", needs(mcdenoise::cross_bilateral_guides),
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
               return mcdenoise::cross_bilateral(d, b, features(g), s,
                                                 mcdenoise::default_cross_bilateral_sigma_spatial,
                                                 mcdenoise::default_cross_bilateral_sigma_color, {}, r, n);
           } },
-        { "atrous", feature_guides,
+        { "atrous", needs(mcdenoise::atrous_guides),
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
               return mcdenoise::atrous(d, b, features(g), s / 2, mcdenoise::default_atrous_sigma_luminance, {}, r,
                                        n);
           } },
-        { "nlmeans", feature_guides,
+        { "nlmeans", needs(mcdenoise::nlmeans_guides),
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
               return mcdenoise::nlmeans(d, b, features(g), s / 2, mcdenoise::default_nlmeans_patch_radius,
                                         mcdenoise::default_nlmeans_strength, {}, r, n);
           } },
-        { "clamp_fireflies", feature_guides,
+        { "clamp_fireflies", needs(mcdenoise::clamp_fireflies_guides),
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int s, ROI r, int n) {
               return mcdenoise::clamp_fireflies(d, b, features(g), mcdenoise::default_firefly_factor, s / 2, r,
                                                 n);
@@ -109,7 +129,7 @@ const std::vector<FilterRow>& filter_table()
               return mcdenoise::remodulate(d, b, g.albedo, mcdenoise::default_demodulate_epsilon, r, n);
           },
           true },
-        { "denoise", feature_guides,
+        { "denoise", needs(mcdenoise::denoise_guides),
           [](ImageBuf& d, const ImageBuf& b, const GuideSet& g, int, ROI r, int n) {
               return mcdenoise::denoise(d, b, features(g), r, n);
           } },

@@ -32,6 +32,58 @@ struct Guides {
     const ImageBuf* motion = nullptr;
 };
 
+/// A set of `Guides` fields, one bit each: which guides an operation
+/// reads.
+using GuideMask = unsigned;
+
+/// One field of `Guides`: the name that stands for it everywhere (the C++
+/// field, Python's `guides` keys, the library's messages), its bit in a
+/// `GuideMask` and the member itself.
+struct GuideField {
+    const char* name;
+    GuideMask bit;
+    const ImageBuf* Guides::*member;
+};
+
+/// Every field of `Guides`, in declaration order: the one table of guide
+/// names that mcdtool's roles, the Python module and the tests derive theirs
+/// from.
+inline constexpr GuideField guide_fields[] = {
+    { "object_id", 1u << 0, &Guides::object_id }, { "normal", 1u << 1, &Guides::normal },
+    { "depth", 1u << 2, &Guides::depth },         { "albedo", 1u << 3, &Guides::albedo },
+    { "variance", 1u << 4, &Guides::variance },   { "half_a", 1u << 5, &Guides::half_a },
+    { "half_b", 1u << 6, &Guides::half_b },       { "motion", 1u << 7, &Guides::motion },
+};
+
+/// The bit of the field named `name` in `guide_fields`, 0 for no field.
+constexpr GuideMask guide_bit(const char* name)
+{
+    for (const GuideField& field : guide_fields) {
+        const char *a = field.name, *b = name;
+        while (*a && *a == *b)
+            ++a, ++b;
+        if (*a == *b)
+            return field.bit;
+    }
+    return 0;
+}
+
+/// The guides the feature weight reads when present (docs/filters.md).
+constexpr GuideMask feature_weight_guides = guide_bit("object_id") | guide_bit("normal") | guide_bit("depth")
+                                           | guide_bit("albedo");
+/// The guides each feature-guided operation uses when present: every other
+/// field of `Guides` is ignored.
+constexpr GuideMask cross_bilateral_guides = feature_weight_guides;
+constexpr GuideMask atrous_guides          = feature_weight_guides | guide_bit("variance");
+constexpr GuideMask nlmeans_guides         = feature_weight_guides | guide_bit("variance");
+constexpr GuideMask clamp_fireflies_guides = guide_bit("object_id");
+/// `denoise` of one frame (denoise.h): no object id, the halves for the
+/// variance.
+constexpr GuideMask denoise_guides = guide_bit("normal") | guide_bit("depth") | guide_bit("albedo")
+                                    | guide_bit("variance") | guide_bit("half_a") | guide_bit("half_b");
+/// `denoise` across frames (temporal.h): the motion guide too.
+constexpr GuideMask denoise_frames_guides = denoise_guides | guide_bit("motion");
+
 /// How fast a neighbour's weight falls with each feature difference.
 /// A sigma <= 0 (or an absent guide) leaves that feature out.
 ///
