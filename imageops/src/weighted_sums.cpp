@@ -80,10 +80,10 @@ void WeightedSums::add(const float* w, const SumSource& src, int qx0, int qy, in
 }
 
 template<class Store>
-int64_t WeightedSums::write_each(Store&& store) const
+int64_t WeightedSums::write_each(int c0, int c1, Store&& store) const
 {
     int64_t empty = 0;
-    for (int c = 0; c < m_nc; ++c) {
+    for (int c = c0; c < c1; ++c) {
         const float* num = m_num.data() + size_t(c) * m_n;
         const float* den = m_den.data() + (m_masked ? size_t(c) * m_n : 0);
         for (int i = 0; i < m_n; ++i) {
@@ -97,12 +97,19 @@ int64_t WeightedSums::write_each(Store&& store) const
 
 int64_t WeightedSums::write(float* out, std::ptrdiff_t stride) const
 {
-    return write_each([=](int c, int i, float v) { out[i * stride + c] = v; });
+    return write(out, stride, m_c0, m_c0 + m_nc);
+}
+
+int64_t WeightedSums::write(float* out, std::ptrdiff_t stride, int chbegin, int chend) const
+{
+    const int c0 = chbegin - m_c0;
+    return write_each(c0, chend - m_c0,
+                      [=](int c, int i, float v) { out[i * stride + c - c0] = v; });
 }
 
 int64_t WeightedSums::write_planes(float* const* out) const
 {
-    return write_each([=](int c, int i, float v) { out[c][i] = v; });
+    return write_each(0, m_nc, [=](int c, int i, float v) { out[c][i] = v; });
 }
 
 }  // namespace mcdenoise

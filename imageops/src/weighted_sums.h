@@ -47,14 +47,19 @@ public:
     /// writing `out[i * stride + c]`.
     int64_t write(float* out, std::ptrdiff_t stride) const;
 
+    /// `write` of channels [chbegin, chend) alone (absolute channel
+    /// numbers, inside this object's), `out[i * stride + c - chbegin]`.
+    int64_t write(float* out, std::ptrdiff_t stride, int chbegin, int chend) const;
+
     /// The weighted means of channel c into `out[c][i]`; returns the count
     /// of empty channels, as `write`.
     int64_t write_planes(float* const* out) const;
 
 private:
-    // Calls store(c, i, mean) for every channel c and pixel i.
+    // Calls store(c, i, mean) for every channel c in [c0, c1) (counted
+    // from chbegin) and pixel i.
     template<class Store>
-    int64_t write_each(Store&& store) const;
+    int64_t write_each(int c0, int c1, Store&& store) const;
 
     int m_c0, m_nc, m_n;
     bool m_masked;
