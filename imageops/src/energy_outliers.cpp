@@ -4,6 +4,7 @@
 
 #include "feature_field.h"
 #include "layer_channels.h"
+#include "weighted_sums.h"
 #include "window.h"
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -217,21 +218,47 @@ void spread_rows(const Planes<float>& excess, const ROI& roi, const ROI& data_wi
         given[size_t(c)] = std::any_of(excess.values[size_t(c)].begin(),
                                        excess.values[size_t(c)].end(),
                                        [](float v) { return v != 0.0f; });
-    parallel_rows(roi, nthreads, [&](int y) {
-        const Span span = clip_window(y, excess_spread_radius, reg.ybegin, reg.yend);
-        std::vector<float> sum(size_t(roi.width()));
+    // Blocks of rows at a time, eight columns in registers: each row of h
+    // is read once for every row of the block that reaches it; for a row
+    // the terms come in the same order as one row at a time (a row out of
+    // reach takes 0 * h, which leaves its sum as it is).
+    using OIIO::simd::vfloat8;
+    constexpr int block = 8;
+    const int nblocks   = (roi.height() + block - 1) / block;
+    const int width     = roi.width();
+    parallel_rows(ROI(0, 1, 0, nblocks), nthreads, [&](int b) {
+        const int y0   = roi.ybegin + b * block;
+        const int rows = std::min(block, roi.yend - y0);
+        const int qlo  = clip_window(y0, excess_spread_radius, reg.ybegin, reg.yend).begin;
+        const int qhi  = clip_window(y0 + rows - 1, excess_spread_radius, reg.ybegin, reg.yend).end;
+        // w[(qy - qlo) * block + j]: the weight of h's row qy for row y0 + j.
+        std::vector<float> w(size_t(qhi - qlo) * block, 0.0f);
+        for (int j = 0; j < rows; ++j) {
+            const Span span = clip_window(y0 + j, excess_spread_radius, reg.ybegin, reg.yend);
+            for (int qy = span.begin; qy < span.end; ++qy)
+                w[size_t(qy - qlo) * block + size_t(j)] = g[size_t(y0 + j - qy + excess_spread_radius)]
+                                                          * inv_y[size_t(qy - reg.ybegin)];
+        }
+        std::vector<float> sums(size_t(block) * size_t(width));
         for (int c = 0; c < nc; ++c) {
             if (!given[size_t(c)])
                 continue;
-            std::fill(sum.begin(), sum.end(), 0.0f);
-            for (int qy = span.begin; qy < span.end; ++qy) {
-                const float w = g[size_t(y - qy + excess_spread_radius)]
-                                * inv_y[size_t(qy - reg.ybegin)];
-                const float* in = h.row(c, qy);
-                for (size_t i = 0; i < sum.size(); ++i)
-                    sum[i] += w * in[i];
+            for (int i = 0; i < width; i += vfloat8::elements) {
+                const int count = std::min(int(vfloat8::elements), width - i);
+                vfloat8 acc[block];
+                for (int j = 0; j < block; ++j)
+                    acc[j] = vfloat8(0.0f);
+                for (int qy = qlo; qy < qhi; ++qy) {
+                    const vfloat8 hv  = load_lanes(h.row(c, qy) + i, count);
+                    const float* wq   = w.data() + size_t(qy - qlo) * block;
+                    for (int j = 0; j < block; ++j)
+                        acc[j] = acc[j] + vfloat8(wq[j]) * hv;
+                }
+                for (int j = 0; j < block; ++j)
+                    store_lanes(acc[j], sums.data() + size_t(j) * size_t(width) + size_t(i), count);
             }
-            sink(y, c, sum.data());
+            for (int j = 0; j < rows; ++j)
+                sink(y0 + j, c, sums.data() + size_t(j) * size_t(width));
         }
     });
 }

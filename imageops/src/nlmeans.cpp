@@ -158,6 +158,43 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
         }
 }
 
+// The weight rows of one search row (one dy) for each row of a chunk, so
+// the sums take them in one pass (`WeightedSums::add_rows`).
+class WeightBatch {
+public:
+    WeightBatch(int rows, int per_row, int n)
+        : m_per_row(per_row)
+        , m_width((n + 7) / 8 * 8)
+        , m_weights(size_t(rows) * size_t(per_row) * size_t(m_width))
+        , m_rows(size_t(rows))
+    {
+    }
+
+    // Hold a copy of the weights w[i0, i1) of row `r` for (qx0 + i, qy).
+    void put(int r, const float* w, int qx0, int qy, int i0, int i1)
+    {
+        std::vector<WeightRow>& held = m_rows[size_t(r)];
+        float* copy = m_weights.data()
+                      + (size_t(r) * size_t(m_per_row) + held.size()) * size_t(m_width);
+        std::copy(w + i0, w + i1, copy + i0);
+        held.push_back({ copy, qx0, qy, i0, i1 });
+    }
+
+    // Add every held row to its sums, in the order held, and let go of them.
+    void flush(std::vector<WeightedSums>& sums, const SumSource& values)
+    {
+        for (size_t r = 0; r < m_rows.size(); ++r) {
+            sums[r].add_rows(m_rows[r].data(), int(m_rows[r].size()), values);
+            m_rows[r].clear();
+        }
+    }
+
+private:
+    int m_per_row, m_width;
+    std::vector<float> m_weights;
+    std::vector<std::vector<WeightRow>> m_rows;
+};
+
 // The value channels of `target`.
 int value_end(const NlmTarget& target)
 {
@@ -176,11 +213,18 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n,
     std::vector<WeightedSums> sums;
     for (int y = y0; y < y1; ++y)
         sums.emplace_back(c0, c1, n, in.frames.front().values->masked());
-    for (const NlmFrame& q : in.frames)
+    for (const NlmFrame& q : in.frames) {
+        WeightBatch batch(y1 - y0, 2 * q.search_radius + 1, n);
+        int batch_dy = q.search_radius + 1;
         frame_chunk(in, q, y0, y1, x0, n,
                     [&](int y, const float* w, int dx, int dy, int i0, int i1) {
-                        sums[size_t(y - y0)].add(w, *q.values, x0 + dx, y + dy, i0, i1);
+                        if (dy != batch_dy)
+                            batch.flush(sums, *q.values);
+                        batch_dy = dy;
+                        batch.put(y - y0, w, x0 + dx, y + dy, i0, i1);
                     });
+        batch.flush(sums, *q.values);
+    }
     for (const NlmTarget& t : targets) {
         int64_t empty = 0;
         for (int y = y0; y < y1; ++y)
