@@ -34,7 +34,7 @@ struct NlmInputs {
     const std::vector<NlmFrame>& frames;
     const ColourField& colour;      // the filtered pixels' patches
     const VarianceField& variance;  // and their variance
-    ROI roi, dw;
+    ROI dw;
     int f;
     float k2;  // strength^2
 };
@@ -362,7 +362,7 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
                     float strength, int nthreads, const std::vector<NlmTarget>& targets)
 {
     const ROI& roi = targets.front().result->roi;
-    const NlmInputs in { frames, colour, variance, roi, dw, patch_radius, strength * strength };
+    const NlmInputs in { frames, colour, variance, dw, patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
@@ -380,7 +380,7 @@ void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceF
     NlmFrame at_pixel      = q;
     at_pixel.search_radius = 0;
     const std::vector<NlmFrame> frames { at_pixel };
-    const NlmInputs in { frames, colour, variance, region, dw, patch_radius,
+    const NlmInputs in { frames, colour, variance, dw, patch_radius,
                          strength * strength };
     std::fill(w.values.begin(), w.values.end(), 0.0f);
     OIIO::ImageBufAlgo::parallel_image(region, nthreads, [&](ROI strip) {
