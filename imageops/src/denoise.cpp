@@ -96,8 +96,9 @@ bool check_halves(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, c
            && check_guide(op_name, "half_b", dst, *guides.half_b, nc, roi);
 }
 
-/// The names of the guides `denoise` reads, comma separated.
-std::string guide_names(const Guides& guides)
+}  // namespace
+
+std::string denoise_guide_names(const Guides& guides)
 {
     std::string names;
     const std::pair<const ImageBuf*, const char*> all[] = {
@@ -111,8 +112,6 @@ std::string guide_names(const Guides& guides)
             names += (names.empty() ? "" : ",") + std::string(name);
     return names;
 }
-
-}  // namespace
 
 bool check_denoise_guides(const char* op, ImageBuf& dst, const ImageBuf& beauty,
                           const Guides& guides, const ROI& roi)
@@ -138,7 +137,7 @@ ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
 
 bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
                            const Guides& guides, const ROI& region, int nthreads,
-                           DenoiseFrame& frame)
+                           DenoiseFrame& frame, SplitScales* scales)
 {
     frame.guides           = guides;  // the object id is not read (see denoise.h)
     frame.guides.object_id = nullptr;
@@ -155,7 +154,8 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begi
         test_variance         = &pixel_variance;
     }
     if (!split_outliers(op_name, dst, beauty, layer_begin, test_variance, firefly_factor,
-                        firefly_radius, region, nthreads, frame.clamped, frame.excess))
+                        firefly_radius, region, nthreads, frame.clamped, frame.excess,
+                        scales))
         return false;
     const bool measured = frame.guides.variance != nullptr;
     if (!measured) {
@@ -188,7 +188,7 @@ bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
     if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
                           premultiplied_alpha(beauty, layer_begin), nthreads))
         return false;
-    dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
+    dst.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
     return true;
 }
 

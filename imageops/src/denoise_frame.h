@@ -5,9 +5,12 @@
 
 #include <mcdenoise/features.h>
 
+#include "energy_outliers.h"
 #include "plane.h"
 
 #include <OpenImageIO/imagebuf.h>
+
+#include <string>
 
 namespace mcdenoise {
 
@@ -30,10 +33,15 @@ struct DenoiseFrame {
 /// to the colour and to the stacked layers from channel `layer_begin` on,
 /// layer_channels.h), then take the variance from the guide, the halves or
 /// an estimate. Object ids are dropped from the guides. The guides must
-/// have been checked; on failure sets `dst`'s error.
+/// have been checked; on failure sets `dst`'s error. With `scales`, what
+/// the clamp did to each pixel goes there too (`split_outliers`).
 bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, int layer_begin,
                            const Guides& guides, const OIIO::ROI& region, int nthreads,
-                           DenoiseFrame& frame);
+                           DenoiseFrame& frame, SplitScales* scales = nullptr);
+
+/// The names of the guides `denoise` reads, comma separated (its `dst`
+/// attribute `mcdenoise:denoise_guides`).
+std::string denoise_guide_names(const Guides& guides);
 
 /// Check the guides `denoise` reads (the feature guides and the halves)
 /// against `roi`; on failure sets `dst`'s error prefixed with `op`.

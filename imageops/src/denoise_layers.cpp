@@ -1,14 +1,19 @@
-// denoise_layers.cpp: denoise of a beauty with its light layers: stack the
-// layers after the beauty's channels, denoise the stack once, split it.
+// denoise_layers.cpp: denoise of a beauty with its light layers: the
+// beauty's steps of `denoise`, each decision (the outlier split, the
+// NL-means weights, the factor the excess is given back with) made once on
+// the beauty and applied to every layer's planes alongside.
 #include <mcdenoise/denoise_layers.h>
+#include <mcdenoise/denoise.h>
 
+#include "denoise_frame.h"
+#include "energy_outliers.h"
 #include "guides.h"
 #include "layer_channels.h"
 #include "operation.h"
+#include "window.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <algorithm>
 #include <string>
 
 namespace mcdenoise {
@@ -39,75 +44,45 @@ bool check_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers, con
     return true;
 }
 
-/// Channels of `src` over its overlap with `window` into the float image
-/// `into` (data window `window`), from channel `chbegin` on.
-bool put_channels(const ImageBuf& src, const ROI& window, int chbegin, ImageBuf& into)
+/// What `denoise` does to the beauty, done to each layer: the outlier
+/// split of `scales` (over `region`), into `values[i]` over the search
+/// region of the beauty's `roi` and `excess[i]` over `region`.
+bool split_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers,
+                  const SplitScales& scales, const ROI& region, const ROI& roi, int nthreads,
+                  std::vector<SumSource>& values, std::vector<Planes<float>>& excess)
 {
-    ROI from = OIIO::roi_intersection(src.roi(), window);
-    if (!from.defined() || from.npixels() == 0)
-        return true;
-    from.chbegin = 0;
-    from.chend   = src.nchannels();
-    return src.get_pixels(from, OIIO::TypeDesc::FLOAT, into.pixeladdr(from.xbegin, from.ybegin, 0, chbegin),
-                          into.pixel_stride(), into.scanline_stride());
-}
-
-/// The beauty's channels, then each layer's, as float over the beauty's
-/// data window; layer pixels outside their own data window are 0.
-bool stack(ImageBuf& dst, const ImageBuf& beauty, const std::vector<const ImageBuf*>& layers,
-           ImageBuf& stacked)
-{
-    OIIO::ImageSpec spec = beauty.spec();
-    spec.set_format(OIIO::TypeDesc::FLOAT);
-    spec.channelformats.clear();
-    for (const ImageBuf* layer : layers)
-        for (const std::string& name : layer->spec().channelnames)
-            spec.channelnames.push_back(name);
-    spec.nchannels = int(spec.channelnames.size());
-    // zeros only where some layer does not cover the beauty's data window
-    const bool covered = std::all_of(layers.begin(), layers.end(), [&](const ImageBuf* layer) {
-        const ROI l = layer->roi(), b = beauty.roi();
-        return l.xbegin <= b.xbegin && l.xend >= b.xend && l.ybegin <= b.ybegin && l.yend >= b.yend;
-    });
-    stacked.reset(spec, covered ? OIIO::InitializePixels::No : OIIO::InitializePixels::Yes);
-    bool ok     = put_channels(beauty, beauty.roi(), 0, stacked);
-    int chbegin = beauty.nchannels();
-    for (const ImageBuf* layer : layers) {
-        ok = ok && put_channels(*layer, beauty.roi(), chbegin, stacked);
-        chbegin += layer->nchannels();
+    const ROI search = grow_and_clip(roi, denoise_search_radius, region);
+    values.resize(layers.size());
+    excess.resize(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i) {
+        ROI read     = region;
+        read.chbegin = 0;
+        read.chend   = layers[i]->nchannels();
+        PixelBlock block;
+        if (!load_block(*layers[i], read, block)) {
+            dst.errorfmt("{}: could not read layer {}: {}", op_name, i, layers[i]->geterror());
+            return false;
+        }
+        split_layer(block, scales, search, nthreads, values[i], excess[i]);
     }
-    if (!ok)
-        dst.errorfmt("{}: stacking the layers: {}", op_name, stacked.geterror());
-    return ok;
+    return true;
 }
 
-/// Channels [chbegin, chbegin + n) of `stacked` into `out` (allocated like
-/// `like`, with its channel names, if uninitialized), over `roi`'s pixels.
-bool split(ImageBuf& dst, const ImageBuf& stacked, int chbegin, const ImageBuf& like,
-           const ROI& roi, int nthreads, ImageBuf& out)
+/// `from` (a float image over `roi`) into `out`: moved when `out` is
+/// uninitialized, else copied into its pixels.
+bool put_result(ImageBuf& dst, ImageBuf& from, const ROI& roi, int nthreads, ImageBuf& out)
 {
-    const int n          = like.nchannels();
-    OIIO::ImageSpec spec = stacked.spec();
-    spec.nchannels       = n;
-    spec.channelnames    = like.spec().channelnames;
-    spec.alpha_channel   = like.spec().alpha_channel;
-    spec.z_channel       = -1;
-    ImageBuf part(spec, OIIO::InitializePixels::No);
-    ROI from    = roi;
-    from.chbegin = chbegin;
-    from.chend   = chbegin + n;
-    ROI pixels   = roi;
+    if (!out.initialized()) {
+        out = std::move(from);
+        return true;
+    }
+    ROI pixels    = roi;
     pixels.chbegin = 0;
-    pixels.chend   = n;
-    const bool ok = stacked.get_pixels(from, OIIO::TypeDesc::FLOAT, part.localpixels())
-                    && (out.initialized()
-                            ? OIIO::ImageBufAlgo::copy(out, part, OIIO::TypeDesc::UNKNOWN, pixels,
-                                                       nthreads)
-                            : (out = std::move(part), true));
-    if (!ok)
-        dst.errorfmt("{}: splitting the result: {}{}", op_name, stacked.geterror(),
-                     out.geterror());
-    return ok;
+    pixels.chend   = from.nchannels();
+    if (OIIO::ImageBufAlgo::copy(out, from, OIIO::TypeDesc::UNKNOWN, pixels, nthreads))
+        return true;
+    dst.errorfmt("{}: writing the result: {}", op_name, out.geterror());
+    return false;
 }
 
 }  // namespace
@@ -116,27 +91,41 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
                     const std::vector<const ImageBuf*>& layers, const Guides& guides, ROI roi,
                     int nthreads)
 {
-    if (!resolve_roi(op_name, dst, beauty, roi) || !check_layers(dst, layers, roi))
+    if (!resolve_roi(op_name, dst, beauty, roi) || !check_layers(dst, layers, roi)
+        || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
-    ImageBuf stacked, result;
-    if (!stack(dst, beauty, layers, stacked))
+    const int nch    = beauty.nchannels();
+    const ROI region = denoise_region(beauty, roi);
+    DenoiseFrame frame;
+    SplitScales scales;
+    std::vector<SumSource> values;
+    std::vector<Planes<float>> excess;
+    if (!prepare_denoise_frame(dst, beauty, nch, guides, region, nthreads, frame, &scales)
+        || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess))
         return false;
-    roi.chbegin = 0;
-    roi.chend   = stacked.nchannels();
-    if (!denoise_stacked(result, stacked, beauty.nchannels(), guides, roi, nthreads)) {
-        dst.errorfmt("{}", result.geterror());
+    // Into new images, so the excess can be added to float pixels in place.
+    ImageBuf out;
+    std::vector<ImageBuf> outs;
+    if (!nlmeans_layers(out, outs, frame.clamped, layers, std::move(values), frame.guides,
+                        denoise_search_radius, denoise_patch_radius, frame.strength,
+                        denoise_feature_sigmas, roi, nthreads)) {
+        dst.errorfmt("{}", out.geterror());
         return false;
     }
+    Plane<float> factors;
+    if (!give_back_excess(op_name, out, frame.excess, roi, beauty.roi(),
+                          premultiplied_alpha(beauty, nch), nthreads, &factors)) {
+        dst.errorfmt("{}", out.geterror());
+        return false;
+    }
+    out.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
     dst_layers.resize(layers.size());
-    if (!split(dst, result, 0, beauty, roi, nthreads, dst))
-        return false;
-    int chbegin = beauty.nchannels();
     for (size_t i = 0; i < layers.size(); ++i) {
-        if (!split(dst, result, chbegin, *layers[i], roi, nthreads, dst_layers[i]))
+        give_back_layer_excess(outs[i], excess[i], roi, beauty.roi(), factors, nthreads);
+        if (!put_result(dst, outs[i], roi, nthreads, dst_layers[i]))
             return false;
-        chbegin += layers[i]->nchannels();
     }
-    return true;
+    return put_result(dst, out, roi, nthreads, dst);
 }
 
 std::vector<ImageBuf> denoise_layers(const ImageBuf& beauty,

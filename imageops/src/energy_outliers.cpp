@@ -4,6 +4,7 @@
 
 #include "feature_field.h"
 #include "layer_channels.h"
+#include "weighted_sums.h"
 #include "window.h"
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -85,15 +86,17 @@ std::vector<float> inverse_coverage(const std::vector<float>& g, int a, int b, i
 
 bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
                     const ImageBuf* variance, float factor, int radius, const ROI& region,
-                    int nthreads, ImageBuf& kept, Planes<float>& excess)
+                    int nthreads, ImageBuf& kept, Planes<float>& excess, SplitScales* scales)
 {
     const int nch = beauty.nchannels();
     const int nc  = colour_channels(nch);
     Plane<float> noise;
     if (!luminance_variance(op, dst, variance, nc, region, nthreads, noise))
         return false;
+    if (scales)
+        scales->gives_back = Plane<uint8_t>(region, uint8_t(0));
     if (!clamp_fireflies_layers(kept, beauty, layer_begin, {}, factor, radius, region,
-                                nthreads)) {
+                                nthreads, scales ? &scales->scale : nullptr)) {
         dst.errorfmt("{}: {}", op, kept.geterror());
         return false;
     }
@@ -112,6 +115,10 @@ bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int l
             const size_t i = excess.offset(x, y);
             const bool highlight = !noise.values.empty()
                                    && cut > consistent_excess_sigmas * std::sqrt(noise.values[i]);
+            if (scales) {
+                scales->scale.at(x, y)      = highlight ? 1.0f : scales->scale.at(x, y);
+                scales->gives_back.at(x, y) = !highlight;
+            }
             for (int c = 0; c < nch; ++c) {
                 if (c >= nc && c < layer_begin)
                     continue;
@@ -125,8 +132,56 @@ bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int l
     return true;
 }
 
-ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
-                       int nchannels, int nthreads)
+void split_layer(const PixelBlock& in, const SplitScales& scales, const ROI& values_region,
+                 int nthreads, SumSource& kept, Planes<float>& excess)
+{
+    const ROI& region = scales.scale.region;
+    const int nc      = in.nchannels;
+    kept              = SumSource(values_region, nc);
+    excess            = Planes<float>(region, nc, 0.0f);
+    std::vector<uint8_t> row_has_nonfinite(size_t(values_region.height()), 0);
+    parallel_rows(region, nthreads, [&](int y) {
+        const bool values_row = y >= values_region.ybegin && y < values_region.yend;
+        bool any              = false;
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const float* v    = in.pixel(x, y);
+            const float s     = scales.scale.at(x, y);
+            const bool gives  = scales.gives_back.at(x, y);
+            const size_t i    = excess.offset(x, y);
+            const bool stored = values_row && x >= values_region.xbegin
+                                && x < values_region.xend;
+            for (int c = 0; c < nc; ++c) {
+                const bool finite = std::isfinite(v[c]);
+                const float k     = finite ? v[c] * s : v[c];
+                if (gives && finite)
+                    excess.values[size_t(c)][i] = v[c] - k;
+                if (stored)
+                    *kept.from(c, x, y) = summable(k);
+                any |= stored && !finite;
+            }
+        }
+        if (values_row)
+            row_has_nonfinite[size_t(y - values_region.ybegin)] = any;
+    });
+    if (std::find(row_has_nonfinite.begin(), row_has_nonfinite.end(), uint8_t(1))
+        == row_has_nonfinite.end())
+        return;
+    kept.finite = Planes<float>(values_region, nc).values;
+    parallel_rows(values_region, nthreads, [&](int y) {
+        for (int x = values_region.xbegin; x < values_region.xend; ++x)
+            for (int c = 0; c < nc; ++c)
+                kept.finite[size_t(c)][kept.offset(x, y)] = std::isfinite(in.pixel(x, y)[c]);
+    });
+}
+
+namespace {
+
+/// The excess spread over `roi` (see `spread_excess`), handed out row by
+/// row: `sink(y, c, sum)` takes row y of channel c (the ROI's width of
+/// values) for each plane c that holds any excess.
+template<class Sink>
+void spread_rows(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+                 int nthreads, Sink&& sink)
 {
     const std::vector<float> g = spread_kernel();
     const ROI& reg             = excess.region;
@@ -163,28 +218,64 @@ ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& d
         given[size_t(c)] = std::any_of(excess.values[size_t(c)].begin(),
                                        excess.values[size_t(c)].end(),
                                        [](float v) { return v != 0.0f; });
-    ROI full    = roi;
+    // Blocks of rows at a time, eight columns in registers: each row of h
+    // is read once for every row of the block that reaches it; for a row
+    // the terms come in the same order as one row at a time (a row out of
+    // reach takes 0 * h, which leaves its sum as it is).
+    using OIIO::simd::vfloat8;
+    constexpr int block = 8;
+    const int nblocks   = (roi.height() + block - 1) / block;
+    const int width     = roi.width();
+    parallel_rows(ROI(0, 1, 0, nblocks), nthreads, [&](int b) {
+        const int y0   = roi.ybegin + b * block;
+        const int rows = std::min(block, roi.yend - y0);
+        const int qlo  = clip_window(y0, excess_spread_radius, reg.ybegin, reg.yend).begin;
+        const int qhi  = clip_window(y0 + rows - 1, excess_spread_radius, reg.ybegin, reg.yend).end;
+        // w[(qy - qlo) * block + j]: the weight of h's row qy for row y0 + j.
+        std::vector<float> w(size_t(qhi - qlo) * block, 0.0f);
+        for (int j = 0; j < rows; ++j) {
+            const Span span = clip_window(y0 + j, excess_spread_radius, reg.ybegin, reg.yend);
+            for (int qy = span.begin; qy < span.end; ++qy)
+                w[size_t(qy - qlo) * block + size_t(j)] = g[size_t(y0 + j - qy + excess_spread_radius)]
+                                                          * inv_y[size_t(qy - reg.ybegin)];
+        }
+        std::vector<float> sums(size_t(block) * size_t(width));
+        for (int c = 0; c < nc; ++c) {
+            if (!given[size_t(c)])
+                continue;
+            for (int i = 0; i < width; i += vfloat8::elements) {
+                const int count = std::min(int(vfloat8::elements), width - i);
+                vfloat8 acc[block];
+                for (int j = 0; j < block; ++j)
+                    acc[j] = vfloat8(0.0f);
+                for (int qy = qlo; qy < qhi; ++qy) {
+                    const vfloat8 hv  = load_lanes(h.row(c, qy) + i, count);
+                    const float* wq   = w.data() + size_t(qy - qlo) * block;
+                    for (int j = 0; j < block; ++j)
+                        acc[j] = acc[j] + vfloat8(wq[j]) * hv;
+                }
+                for (int j = 0; j < block; ++j)
+                    store_lanes(acc[j], sums.data() + size_t(j) * size_t(width) + size_t(i), count);
+            }
+            for (int j = 0; j < rows; ++j)
+                sink(y0 + j, c, sums.data() + size_t(j) * size_t(width));
+        }
+    });
+}
+
+}  // namespace
+
+ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+                       int nchannels, int nthreads)
+{
+    ROI full     = roi;
     full.chbegin = 0;
     full.chend   = nchannels;
     ImageBuf spread(OIIO::ImageSpec(full, OIIO::TypeDesc::FLOAT));
     OIIO::ImageBufAlgo::zero(spread);
-    parallel_rows(roi, nthreads, [&](int y) {
-        const Span span = clip_window(y, excess_spread_radius, reg.ybegin, reg.yend);
-        std::vector<float> sum(size_t(roi.width()));
-        for (int c = 0; c < nc; ++c) {
-            if (!given[size_t(c)])
-                continue;
-            std::fill(sum.begin(), sum.end(), 0.0f);
-            for (int qy = span.begin; qy < span.end; ++qy) {
-                const float w = g[size_t(y - qy + excess_spread_radius)]
-                                * inv_y[size_t(qy - reg.ybegin)];
-                const float* in = h.row(c, qy);
-                for (size_t i = 0; i < sum.size(); ++i)
-                    sum[i] += w * in[i];
-            }
-            for (int x = roi.xbegin; x < roi.xend; ++x)
-                static_cast<float*>(spread.pixeladdr(x, y))[c] = sum[size_t(x - roi.xbegin)];
-        }
+    spread_rows(excess, roi, data_window, nthreads, [&](int y, int c, const float* sum) {
+        for (int x = roi.xbegin; x < roi.xend; ++x)
+            static_cast<float*>(spread.pixeladdr(x, y))[c] = sum[x - roi.xbegin];
     });
     return spread;
 }
@@ -202,7 +293,7 @@ namespace {
 /// Add `spread` to the float image `sum` over `roi` as `give_back_excess`
 /// says.
 void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha_channel,
-                int nthreads)
+                int nthreads, Plane<float>* factors)
 {
     const int nch    = sum.nchannels();
     const int nc     = colour_channels(nch);
@@ -216,6 +307,8 @@ void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha
                 if (e[c] > 0.0f && out[c] <= out[alpha_channel]
                     && out[c] + e[c] > out[alpha_channel])
                     factor = std::min(factor, (out[alpha_channel] - out[c]) / e[c]);
+            if (factors)
+                factors->at(x, y) = factor;
             const float a = alpha ? out[alpha_channel] : 0.0f;
             for (int c = 0; c < nch; ++c) {
                 const bool held = alpha && c < nc && out[c] <= a;
@@ -230,11 +323,14 @@ void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha
 }  // namespace
 
 bool give_back_excess(const char* op, ImageBuf& dst, const Planes<float>& excess,
-                      const ROI& roi, const ROI& data_window, int alpha_channel, int nthreads)
+                      const ROI& roi, const ROI& data_window, int alpha_channel, int nthreads,
+                      Plane<float>* factors)
 {
     const ImageBuf spread = spread_excess(excess, roi, data_window, dst.nchannels(), nthreads);
+    if (factors)
+        *factors = Plane<float>(roi);
     if (dst.spec().format == OIIO::TypeDesc::FLOAT && dst.localpixels()) {
-        add_spread(dst, spread, roi, alpha_channel, nthreads);
+        add_spread(dst, spread, roi, alpha_channel, nthreads, factors);
         return true;
     }
     ImageBuf sum;
@@ -242,12 +338,24 @@ bool give_back_excess(const char* op, ImageBuf& dst, const Planes<float>& excess
         dst.errorfmt("{}: could not add the spread excess: {}", op, sum.geterror());
         return false;
     }
-    add_spread(sum, spread, roi, alpha_channel, nthreads);
+    add_spread(sum, spread, roi, alpha_channel, nthreads, factors);
     if (!OIIO::ImageBufAlgo::paste(dst, roi.xbegin, roi.ybegin, 0, 0, sum, roi, nthreads)) {
         dst.errorfmt("{}: could not add the spread excess: {}", op, dst.geterror());
         return false;
     }
     return true;
+}
+
+void give_back_layer_excess(ImageBuf& dst, const Planes<float>& excess, const ROI& roi,
+                            const ROI& data_window, const Plane<float>& factors, int nthreads)
+{
+    const std::ptrdiff_t stride = dst.pixel_stride() / std::ptrdiff_t(sizeof(float));
+    spread_rows(excess, roi, data_window, nthreads, [&](int y, int c, const float* sum) {
+        float* out      = static_cast<float*>(dst.pixeladdr(roi.xbegin, y, 0, c));
+        const float* f  = factors.from(roi.xbegin, y);
+        for (int i = 0; i < roi.width(); ++i)
+            out[i * stride] += f[i] * sum[i];
+    });
 }
 
 }  // namespace mcdenoise

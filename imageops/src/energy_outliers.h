@@ -5,7 +5,9 @@
 // blotch.
 #pragma once
 
+#include "pixel_block.h"
 #include "plane.h"
+#include "weighted_sums.h"
 
 #include <OpenImageIO/imagebuf.h>
 
@@ -20,6 +22,15 @@ constexpr int excess_spread_radius = 30;
 /// samples agree on, not a firefly.
 constexpr float consistent_excess_sigmas = 2.0f;
 
+/// What the split did to each pixel, to do the same to further layers.
+struct SplitScales {
+    /// The factor the kept colour is of the input's: the clamp's, or 1
+    /// where a highlight is kept whole.
+    Plane<float> scale;
+    /// 1 where the part taken is excess to give back, else 0.
+    Plane<uint8_t> gives_back;
+};
+
 /// Split `beauty` over `region` (inside its data window, all channels) into
 /// `kept`, `clamp_fireflies(beauty, factor, radius)` with its per-pixel
 /// scale, decided on the colour, applied to the colour and to the stacked
@@ -29,12 +40,21 @@ constexpr float consistent_excess_sigmas = 2.0f;
 /// variance guide as features.h reads it; without it every clamped pixel
 /// counts as a firefly), and `excess = beauty - kept`, one plane per
 /// channel of `beauty` over `region` (0 for the channels between the colour
-/// and `layer_begin`, such as alpha, and where a value is not finite). On
+/// and `layer_begin`, such as alpha, and where a value is not finite). With
+/// `scales`, what was done to each pixel of `region` goes there too. On
 /// failure sets `dst`'s error prefixed with `op`.
 bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
                     int layer_begin, const OIIO::ImageBuf* variance, float factor, int radius,
                     const OIIO::ROI& region, int nthreads, OIIO::ImageBuf& kept,
-                    Planes<float>& excess);
+                    Planes<float>& excess, SplitScales* scales = nullptr);
+
+/// The split of `scales` applied to a layer `in` (every channel, over the
+/// scales' region): `kept` the layer times each pixel's scale (non-finite
+/// values as they are) over `values_region` (inside that region) as a
+/// `SumSource`, and `excess` = in - kept where the pixel gives back and the
+/// value is finite, else 0, over the scales' region.
+void split_layer(const PixelBlock& in, const SplitScales& scales, const OIIO::ROI& values_region,
+                 int nthreads, SumSource& kept, Planes<float>& excess);
 
 /// The excess spread over `roi`: a float image over `roi` with `nchannels`
 /// channels, channel c (for each plane c of `excess`) holding `sum_q excess(q) g(p - q) / n(q)`
@@ -55,9 +75,17 @@ int premultiplied_alpha(const OIIO::ImageBuf& beauty, int layer_begin);
 /// With an alpha channel (`alpha_channel` >= 0) the factor is lowered, at
 /// the pixels where the spread would lift a colour channel above alpha, to
 /// what keeps it at alpha (premultiplied colour stays <= alpha where it
-/// was). On failure sets `dst`'s error prefixed with `op`.
+/// was). With `factors`, each pixel's factor over `roi` goes there too. On
+/// failure sets `dst`'s error prefixed with `op`.
 bool give_back_excess(const char* op, OIIO::ImageBuf& dst, const Planes<float>& excess,
                       const OIIO::ROI& roi, const OIIO::ROI& data_window, int alpha_channel,
-                      int nthreads);
+                      int nthreads, Plane<float>* factors = nullptr);
+
+/// Add a layer's excess spread (`spread_excess`) times `factors` (the
+/// beauty's, from `give_back_excess`) to `dst`, a float image with local
+/// pixels and a channel per excess plane, over `roi`.
+void give_back_layer_excess(OIIO::ImageBuf& dst, const Planes<float>& excess,
+                            const OIIO::ROI& roi, const OIIO::ROI& data_window,
+                            const Plane<float>& factors, int nthreads);
 
 }  // namespace mcdenoise

@@ -106,7 +106,7 @@ bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
 
 bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
                             const Guides& guides, float factor, int radius, ROI roi,
-                            int nthreads)
+                            int nthreads, Plane<float>* scales)
 {
     if (!(factor >= 1.0f) || !std::isfinite(factor)) {
         dst.errorfmt("{}: factor must be a finite number >= 1, got {}", op_name, factor);
@@ -135,6 +135,8 @@ bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_beg
         return false;
     const int ncolour  = colour.nchannels();
     const IdPlane* idp = guides.object_id ? &ids : nullptr;
+    if (scales)
+        *scales = Plane<float>(roi);
     parallel_rows(roi, nthreads, [&](int y) {
         const size_t w = size_t(roi.width());
         std::vector<float> scratch(size_t((2 * radius + 1) * (2 * radius + 1)));
@@ -146,6 +148,8 @@ bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_beg
             const float scale = suspect[size_t(x - roi.xbegin)]
                                     ? clamp_scale(colour, idp, factor, radius, x, y, scratch)
                                     : 1.0f;
+            if (scales)
+                scales->at(x, y) = scale;
             const float* in   = block.pixel(x, y);
             for (int ch = roi.chbegin; ch < roi.chend; ++ch) {
                 const float v = in[ch];

@@ -6,6 +6,7 @@
 #include <mcdenoise/nlmeans.h>
 
 #include "feature_field.h"
+#include "layer_channels.h"
 #include "nlmeans_frames.h"
 #include "offset_walk.h"
 #include "operation.h"
@@ -33,7 +34,7 @@ struct NlmInputs {
     const std::vector<NlmFrame>& frames;
     const ColourField& colour;      // the filtered pixels' patches
     const VarianceField& variance;  // and their variance
-    ROI roi, dw;
+    ROI dw;
     int f;
     float k2;  // strength^2
 };
@@ -157,30 +158,89 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
         }
 }
 
-// Rows [y0, y1), columns [x0, x0 + n) of the ROI.
-void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n, ResultPixels& result)
+// The weight rows of one search row (one dy) for each row of a chunk, so
+// the sums take them in one pass (`WeightedSums::add_rows`).
+class WeightBatch {
+public:
+    WeightBatch(int rows, int per_row, int n)
+        : m_per_row(per_row)
+        , m_width((n + 7) / 8 * 8)
+        , m_weights(size_t(rows) * size_t(per_row) * size_t(m_width))
+        , m_rows(size_t(rows))
+    {
+    }
+
+    // Hold a copy of the weights w[i0, i1) of row `r` for (qx0 + i, qy).
+    void put(int r, const float* w, int qx0, int qy, int i0, int i1)
+    {
+        std::vector<WeightRow>& held = m_rows[size_t(r)];
+        float* copy = m_weights.data()
+                      + (size_t(r) * size_t(m_per_row) + held.size()) * size_t(m_width);
+        std::copy(w + i0, w + i1, copy + i0);
+        held.push_back({ copy, qx0, qy, i0, i1 });
+    }
+
+    // Add every held row to its sums, in the order held, and let go of them.
+    void flush(std::vector<WeightedSums>& sums, const SumSource& values)
+    {
+        for (size_t r = 0; r < m_rows.size(); ++r) {
+            sums[r].add_rows(m_rows[r].data(), int(m_rows[r].size()), values);
+            m_rows[r].clear();
+        }
+    }
+
+private:
+    int m_per_row, m_width;
+    std::vector<float> m_weights;
+    std::vector<std::vector<WeightRow>> m_rows;
+};
+
+// The value channels of `target`.
+int value_end(const NlmTarget& target)
 {
-    std::vector<WeightedSums> sums;
-    for (int y = y0; y < y1; ++y)
-        sums.emplace_back(in.roi.chbegin, in.roi.chend, n, in.frames.front().values->masked());
-    for (const NlmFrame& q : in.frames)
-        frame_chunk(in, q, y0, y1, x0, n,
-                    [&](int y, const float* w, int dx, int dy, int i0, int i1) {
-                        sums[size_t(y - y0)].add(w, *q.values, x0 + dx, y + dy, i0, i1);
-                    });
-    int64_t empty = 0;
-    for (int y = y0; y < y1; ++y)
-        empty += sums[size_t(y - y0)].write(result.pixel(x0, y), result.pixel_stride());
-    result.empty_windows += empty;
+    return target.value_begin + target.result->roi.nchannels();
 }
 
-}  // namespace
-
-bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int search_radius,
-             int patch_radius, float strength, const FeatureSigmas& sigmas, ROI roi,
-             int nthreads)
+// Rows [y0, y1), columns [x0, x0 + n) of the ROI, into every target.
+void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n,
+                   const std::vector<NlmTarget>& targets)
 {
-    const char* op = "nlmeans";
+    int c0 = targets.front().value_begin, c1 = value_end(targets.front());
+    for (const NlmTarget& t : targets) {
+        c0 = std::min(c0, t.value_begin);
+        c1 = std::max(c1, value_end(t));
+    }
+    std::vector<WeightedSums> sums;
+    for (int y = y0; y < y1; ++y)
+        sums.emplace_back(c0, c1, n, in.frames.front().values->masked());
+    for (const NlmFrame& q : in.frames) {
+        WeightBatch batch(y1 - y0, 2 * q.search_radius + 1, n);
+        int batch_dy = q.search_radius + 1;
+        frame_chunk(in, q, y0, y1, x0, n,
+                    [&](int y, const float* w, int dx, int dy, int i0, int i1) {
+                        if (dy != batch_dy)
+                            batch.flush(sums, *q.values);
+                        batch_dy = dy;
+                        batch.put(y - y0, w, x0 + dx, y + dy, i0, i1);
+                    });
+        batch.flush(sums, *q.values);
+    }
+    for (const NlmTarget& t : targets) {
+        int64_t empty = 0;
+        for (int y = y0; y < y1; ++y)
+            empty += sums[size_t(y - y0)].write(t.result->pixel(x0, y),
+                                                t.result->pixel_stride(), t.value_begin,
+                                                value_end(t));
+        t.result->empty_windows += empty;
+    }
+}
+
+// What `nlmeans` and `nlmeans_layers` check and read before filtering:
+// the arguments, the ROI (resolved) and the feature inputs of `beauty`.
+bool load_nlmeans(const char* op, ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+                  int search_radius, int patch_radius, float strength,
+                  const FeatureSigmas& sigmas, ROI& roi, int nthreads, FeatureInputs& fin)
+{
     if (search_radius < 0 || search_radius > max_nlmeans_search_radius) {
         dst.errorfmt("{}: search_radius must be between 0 and {}, got {}", op,
                      max_nlmeans_search_radius, search_radius);
@@ -200,30 +260,114 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
     const ROI dw      = beauty.roi();
     const ROI search  = grow_and_clip(roi, search_radius, dw);
     const ROI patches = grow_and_clip(roi, search_radius + patch_radius, dw);
+    return load_feature_inputs(op, dst, beauty, guides, sigmas, search, patches, nthreads, fin);
+}
+
+// The filtered frame's own window over `fin`.
+std::vector<NlmFrame> own_frame(const FeatureInputs& fin, int search_radius)
+{
+    return { { &fin.colour, &fin.variance, &fin.features, &fin.features, &fin.values, nullptr,
+               search_radius, true } };
+}
+
+// Append the planes of `more` (over the same region) to `values`, with a
+// finite mask for every plane when either has one.
+void append_values(SumSource& values, SumSource&& more)
+{
+    const auto ones = [](SumSource& s) {
+        if (!s.masked())
+            for (size_t c = 0; c < s.values.size(); ++c)
+                s.finite.emplace_back(plane_size(s.region), 1.0f);
+    };
+    if (values.masked() || more.masked()) {
+        ones(values);
+        ones(more);
+    }
+    for (size_t c = 0; c < more.values.size(); ++c) {
+        values.values.push_back(std::move(more.values[c]));
+        if (more.masked())
+            values.finite.push_back(std::move(more.finite[c]));
+    }
+}
+
+}  // namespace
+
+bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int search_radius,
+             int patch_radius, float strength, const FeatureSigmas& sigmas, ROI roi,
+             int nthreads)
+{
+    const char* op = "nlmeans";
     FeatureInputs fin;
-    if (!load_feature_inputs(op, dst, beauty, guides, sigmas, search, patches, nthreads, fin))
+    if (!load_nlmeans(op, dst, beauty, guides, search_radius, patch_radius, strength, sigmas, roi,
+                      nthreads, fin))
         return false;
-    const std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features,
-                                           &fin.features, &fin.values, nullptr, search_radius,
-                                           true } };
     return nlmeans_frames(op, dst, beauty,
                           { &beauty, guides.object_id, guides.normal, guides.depth,
                             guides.albedo, guides.variance },
-                          frames, fin.colour, fin.variance, patch_radius, strength, roi,
-                          nthreads);
+                          own_frame(fin, search_radius), fin.colour, fin.variance, patch_radius,
+                          strength, roi, nthreads);
+}
+
+bool nlmeans_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
+                    const std::vector<const ImageBuf*>& layers, std::vector<SumSource>&& values,
+                    const Guides& guides, int search_radius, int patch_radius, float strength,
+                    const FeatureSigmas& sigmas, ROI roi, int nthreads)
+{
+    const char* op = "nlmeans";
+    FeatureInputs fin;
+    if (!load_nlmeans(op, dst, beauty, guides, search_radius, patch_radius, strength, sigmas, roi,
+                      nthreads, fin))
+        return false;
+    std::vector<ResultPixels> results(layers.size() + 1);
+    std::vector<NlmTarget> targets;
+    if (!begin_result(op, dst, beauty,
+                      { &beauty, guides.object_id, guides.normal, guides.depth, guides.albedo,
+                        guides.variance },
+                      roi, results[0]))
+        return false;
+    targets.push_back({ &results[0], roi.chbegin });
+    dst_layers.resize(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i) {
+        ROI layer_roi    = roi;
+        layer_roi.chbegin = 0;
+        layer_roi.chend   = layers[i]->nchannels();
+        if (!begin_result(op, dst_layers[i], *layers[i], { layers[i] }, layer_roi,
+                          results[i + 1])) {
+            dst.errorfmt("{}", dst_layers[i].geterror());
+            return false;
+        }
+        targets.push_back({ &results[i + 1], fin.values.nchannels() });
+        append_values(fin.values, std::move(values[i]));
+    }
+    nlmeans_frames(own_frame(fin, search_radius), fin.colour, fin.variance, beauty.roi(),
+                   patch_radius, strength, nthreads, targets);
+    for (size_t i = 0; i < layers.size(); ++i)
+        if (!finish_result(op, dst_layers[i], results[i + 1])) {
+            dst.errorfmt("{}", dst_layers[i].geterror());
+            return false;
+        }
+    return finish_result(op, dst, results[0]);
 }
 
 void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, const ROI& dw, int patch_radius,
                     float strength, int nthreads, ResultPixels& result)
 {
-    const NlmInputs in { frames, colour, variance, result.roi, dw, patch_radius,
-                         strength * strength };
-    OIIO::ImageBufAlgo::parallel_image(result.roi, nthreads, [&](ROI strip) {
+    nlmeans_frames(frames, colour, variance, dw, patch_radius, strength, nthreads,
+                   { { &result, result.roi.chbegin } });
+}
+
+void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
+                    const VarianceField& variance, const ROI& dw, int patch_radius,
+                    float strength, int nthreads, const std::vector<NlmTarget>& targets)
+{
+    const ROI& roi = targets.front().result->roi;
+    const NlmInputs in { frames, colour, variance, dw, patch_radius, strength * strength };
+    OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
-                nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, result);
+                nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, targets);
             });
     });
 }
@@ -236,7 +380,7 @@ void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceF
     NlmFrame at_pixel      = q;
     at_pixel.search_radius = 0;
     const std::vector<NlmFrame> frames { at_pixel };
-    const NlmInputs in { frames, colour, variance, region, dw, patch_radius,
+    const NlmInputs in { frames, colour, variance, dw, patch_radius,
                          strength * strength };
     std::fill(w.values.begin(), w.values.end(), 0.0f);
     OIIO::ImageBufAlgo::parallel_image(region, nthreads, [&](ROI strip) {

@@ -32,6 +32,13 @@ using SumSource = Planes<float>;
 SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO::ROI& region,
                      int nthreads);
 
+/// One row of weights for `WeightedSums::add_rows`: `w[i]`, i in [i0, i1),
+/// the weight of the value at (qx0 + i, qy) for pixel i of the run.
+struct WeightRow {
+    const float* w;
+    int qx0, qy, i0, i1;
+};
+
 /// Per-channel weighted sums for a run of `n` pixels, over channels
 /// [chbegin, chend) of the `SumSource`s they are given.
 class WeightedSums {
@@ -42,23 +49,57 @@ public:
     /// (qx0 + i, qy) to pixel i's sums (finite values only).
     void add(const float* w, const SumSource& src, int qx0, int qy, int i0, int i1);
 
+    /// `add` of each of `rows[0, count)` in turn, in one pass over the sums
+    /// (eight pixels and up to eight channels held in registers while every
+    /// row goes by): each sum takes the same terms in the same order as
+    /// from `add`, so the result is the same, with far less memory traffic
+    /// when there are many channels.
+    void add_rows(const WeightRow* rows, int count, const SumSource& src);
+
     /// Pixel i's channel chbegin + c: the weighted mean, or 0 when no weight
     /// contributed. Returns the count of such empty channels over the run,
     /// writing `out[i * stride + c]`.
     int64_t write(float* out, std::ptrdiff_t stride) const;
+
+    /// `write` of channels [chbegin, chend) alone (absolute channel
+    /// numbers, inside this object's), `out[i * stride + c - chbegin]`.
+    int64_t write(float* out, std::ptrdiff_t stride, int chbegin, int chend) const;
 
     /// The weighted means of channel c into `out[c][i]`; returns the count
     /// of empty channels, as `write`.
     int64_t write_planes(float* const* out) const;
 
 private:
-    // Calls store(c, i, mean) for every channel c and pixel i.
+    // Calls store(c, i, mean) for every channel c in [c0, c1) (counted
+    // from chbegin) and pixel i.
     template<class Store>
-    int64_t write_each(Store&& store) const;
+    int64_t write_each(int c0, int c1, Store&& store) const;
+
+    // One sum plane of `add_rows`: where it goes, and the plane it takes
+    // `w * value` from (`channel` of the values, or of the finite mask).
+    struct Target {
+        float* sum;
+        int channel;
+        bool mask;
+    };
+    // `add_rows` for G targets at once and, when `weight_sum` is given, the
+    // weights alone into it.
+    template<int G>
+    void add_group(const WeightRow* rows, int count, const SumSource& src,
+                   const Target* targets, float* weight_sum) const;
+    template<int G, bool Weights>
+    void add_rows_group(const WeightRow* rows, int count, const SumSource& src,
+                        const Target* targets, float* weight_sum) const;
+    // The eight pixels from i of `add_rows_group`, where some row does not
+    // cover them all; `row[g]` is target g's source row from xbegin.
+    template<int G, bool Weights>
+    void add_rows_block(const WeightRow* rows, int count, const float* const* row, int xbegin,
+                        int i, const Target* targets, float* weight_sum) const;
 
     int m_c0, m_nc, m_n;
+    int m_stride;  // floats per channel in m_num and m_den: m_n padded to 8
     bool m_masked;
-    std::vector<float> m_num;  // channel-major, m_n per channel
+    std::vector<float> m_num;  // channel-major, m_stride per channel
     std::vector<float> m_den;  // per channel when masked, else one run
 };
 
