@@ -209,12 +209,7 @@ ImageBuf merge_result(const ImageBuf& input, const std::vector<int>& beauty, con
 ImageSpec output_spec(const ImageBuf& input, const OutputFormat& format)
 {
     ImageSpec spec = input.nativespec();
-    if (!format.data_format.empty()) {
-        spec.set_format(TypeDesc(format.data_format));
-        spec.channelformats.clear();
-    }
-    if (!format.compression.empty())
-        spec.attribute("compression", format.compression);
+    apply_format(spec, format);
     return spec;
 }
 
@@ -230,6 +225,16 @@ bool keeps_named_channels(const std::string& path)
 }
 
 }  // namespace
+
+void apply_format(ImageSpec& spec, const OutputFormat& format)
+{
+    if (!format.data_format.empty()) {
+        spec.set_format(TypeDesc(format.data_format));
+        spec.channelformats.clear();
+    }
+    if (!format.compression.empty())
+        spec.attribute("compression", format.compression);
+}
 
 OutputImage compose_output(const ImageBuf& input, const IntegerChannels& integers, const std::vector<int>& beauty,
                            const ImageBuf& result, const OutputFormat& format, const std::string& path)

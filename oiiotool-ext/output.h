@@ -67,6 +67,10 @@ struct OutputFormat {
     std::string compression;  ///< --compression (empty: the input's)
 };
 
+/// Applies `format` to `spec`: -d sets every channel's pixel type,
+/// --compression the compression attribute; empty fields leave them.
+void apply_format(ImageSpec& spec, const OutputFormat& format);
+
 /// What one -o writes: the file spec and its float pixels.
 struct OutputImage {
     ImageSpec spec;

@@ -114,18 +114,13 @@ bool writes_parts(const std::string& path)
 }
 
 void write_parts(OutputBatch& batch, const std::string& path, const std::vector<Part>& parts,
-                 const ImageBuf& pixels, const Options& options, const std::string& context)
+                 const ImageBuf& pixels, const OutputFormat& format, const std::string& context)
 {
     std::vector<ImageSpec> specs;
     std::vector<ImageBuf> images;
     for (const Part& part : parts) {
         ImageSpec spec = part.spec;
-        if (!options.data_format.empty()) {
-            spec.set_format(OIIO::TypeDesc(options.data_format));
-            spec.channelformats.clear();
-        }
-        if (!options.compression.empty())
-            spec.attribute("compression", options.compression);
+        apply_format(spec, format);
         std::vector<int> order;
         for (int c = 0; c < spec.nchannels; ++c)
             order.push_back(part.chbegin + c);

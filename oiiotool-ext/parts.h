@@ -5,7 +5,6 @@
 // part names, channel names and per-part compression and pixel types.
 #pragma once
 
-#include "options.h"
 #include "output.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -40,8 +39,8 @@ ImageBuf read_parts(const std::string& path, const std::vector<Part>& parts, std
 bool writes_parts(const std::string& path);
 
 /// Writes `pixels` (a merged image of `parts`) to `path` as those parts,
-/// with -d and --compression of `options` applied to each.
+/// with `format` (-d, --compression) applied to each.
 void write_parts(OutputBatch& batch, const std::string& path, const std::vector<Part>& parts,
-                 const ImageBuf& pixels, const Options& options, const std::string& context);
+                 const ImageBuf& pixels, const OutputFormat& format, const std::string& context);
 
 }  // namespace mcdtool

@@ -101,15 +101,9 @@ bool check_halves(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, c
 std::string denoise_guide_names(const Guides& guides)
 {
     std::string names;
-    const std::pair<const ImageBuf*, const char*> all[] = {
-        { guides.normal, "normal" },
-        { guides.depth, "depth" },         { guides.albedo, "albedo" },
-        { guides.variance, "variance" },   { guides.half_a, "half_a" },
-        { guides.half_b, "half_b" }
-    };
-    for (const auto& [image, name] : all)
-        if (image)
-            names += (names.empty() ? "" : ",") + std::string(name);
+    for (const GuideField& field : guide_fields)
+        if ((field.bit & denoise_guides) && guides.*field.member)
+            names += (names.empty() ? "" : ",") + std::string(field.name);
     return names;
 }
 
