@@ -197,9 +197,8 @@ bool load_motions(const char* op, ImageBuf& dst, const FrameInput& centre,
     return true;
 }
 
-std::vector<const GuideChannels*> motion_steps(
-    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
-    int offset)
+std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChannels*>& motions,
+                                               const std::vector<int>& offsets, int offset)
 {
     std::vector<const GuideChannels*> steps;
     const int sign = offset > 0 ? 1 : -1;
@@ -209,7 +208,7 @@ std::vector<const GuideChannels*> motion_steps(
         const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
         const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size()
                                                           : 1 + size_t(at - offsets.begin());
-        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
+        steps.push_back(i < motions.size() ? motions[i] : nullptr);
     }
     return steps;
 }

@@ -47,11 +47,11 @@ bool load_motions(const char* op, OIIO::ImageBuf& dst, const FrameInput& centre,
                   std::vector<std::unique_ptr<GuideChannels>>& motions);
 
 /// The `steps` of `motion_warp_map` from the centre to the frame at
-/// `offset`, from `motions` (as `load_motions` gives them for neighbours at
-/// `offsets`): null for a frame on the way that is missing or has no motion.
-std::vector<const GuideChannels*> motion_steps(
-    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
-    int offset);
+/// `offset`, from `motions` (the centre's, then those of the neighbours at
+/// `offsets`, in order; null for a frame without one): null for a frame on
+/// the way that is missing or has no motion.
+std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChannels*>& motions,
+                                               const std::vector<int>& offsets, int offset);
 
 /// Every channel of `src` (and its finite mask) sampled bilinearly where
 /// the motion leads (the taps inside `src`'s region, their weights

@@ -25,25 +25,22 @@ TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& reg
     TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, dims), IdPlane() } };
-    // Every frame's planes share the centre's regions: one offset each.
-    const auto& colour = centre.colour->colour;
-    const auto& var    = centre.variance->colour;
-    const auto& feat   = centre.features->dims;
-    const size_t nf    = frames.size();
+    const size_t nf = frames.size();
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = g.colour.colour.offset(x, y), oc = colour.offset(x, y),
-                         ov = var.offset(x, y), of = feat.offset(x, y);
+            const size_t i = g.colour.colour.offset(x, y);
             float total = 1.0f;
             for (size_t k = 1; k < nf; ++k)
                 total += weights[k - 1].values[i];
             // The weighted mean over the frames of plane p of `planes(f)`
-            // at `o`, each frame's weight to the power `power`.
-            const auto mean = [&](auto&& planes, size_t p, size_t o, int power) {
-                float sum = planes(frames[0]).values[p][o];
+            // at (x, y), each frame's weight to the power `power`.
+            const auto mean = [&](auto&& planes, size_t p, int power) {
+                const auto& centre_planes = planes(frames[0]);
+                float sum = centre_planes.values[p][centre_planes.offset(x, y)];
                 for (size_t k = 1; k < nf; ++k) {
                     const float w = weights[k - 1].values[i];
-                    sum += (power == 2 ? w * w : w) * planes(frames[k]).values[p][o];
+                    const auto& own = planes(frames[k]);
+                    sum += (power == 2 ? w * w : w) * own.values[p][own.offset(x, y)];
                 }
                 return power == 2 ? sum / (total * total) : sum / total;
             };
@@ -52,15 +49,15 @@ TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& reg
             const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
             float lum = 0.0f, lum_var = 0.0f;
             for (int c = 0; c < nc; ++c) {
-                const float u = mean(colours, size_t(c), oc, 1);
-                const float v = mean(variances, size_t(c), ov, 2);
+                const float u = mean(colours, size_t(c), 1);
+                const float v = mean(variances, size_t(c), 2);
                 g.colour.colour.values[size_t(c)][i]   = u;
                 g.variance.colour.values[size_t(c)][i] = v;
                 lum += lw[size_t(c)] * u;
                 lum_var += lw[size_t(c)] * lw[size_t(c)] * v;
             }
             for (int d = 0; d < dims; ++d)
-                g.features.dims.values[size_t(d)][i] = mean(features, size_t(d), of, 1);
+                g.features.dims.values[size_t(d)][i] = mean(features, size_t(d), 1);
             g.colour.luminance.values[i]   = lum;
             g.variance.luminance.values[i] = lum_var;
         }

@@ -6,6 +6,8 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 MCDENOISE_API_BEGIN
@@ -53,15 +55,64 @@ struct FrameInput {
 ///
 /// Every neighbour must have the centre's data window, channel count and
 /// set of the guides `denoise` reads (normal, depth, albedo, variance,
-/// halves), each covering its data window; a motion guide has 4 channels;
-/// `offsets` must be distinct and non-zero. The order of the neighbours
-/// does not change the result. The `dst` attribute
-/// `mcdenoise:denoise_frames` is the count of frames used.
+/// halves); every frame's guides must cover its data window (each frame is
+/// prepared whole, as `prepare_frame` does, whatever the ROI); a motion
+/// guide has 4 channels; `offsets` must be distinct and non-zero. The
+/// order of the neighbours does not change the result. The `dst`
+/// attribute `mcdenoise:denoise_frames` is the count of frames used.
 ImageBuf denoise(const FrameInput& centre, const std::vector<FrameInput>& neighbours,
                  const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInput>& neighbours,
              const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
+
+/// What `prepare_frame` keeps of a frame (the library's own type).
+struct PreparedFrameData;
+
+/// One frame of a shot ready for the cross-frame `denoise`: step 1 below
+/// (`denoise`'s firefly clamp and variance) done over its whole data
+/// window, and the planes the average reads (colour, variance, features,
+/// every channel, the motion) converted once. A sequence prepares each
+/// frame once and passes it to every window it is in, as the centre and
+/// as a neighbour, instead of preparing it again for each. Copies share
+/// the prepared planes, which never change. The frame's beauty and guide
+/// images must stay alive and unchanged while it is used.
+class PreparedFrame {
+public:
+    /// True once `prepare_frame` has made it, even with an error.
+    bool initialized() const { return m_data != nullptr || !m_error.empty(); }
+    /// True if preparing failed; `geterror()` says why.
+    bool has_error() const { return !m_error.empty(); }
+    const std::string& geterror() const { return m_error; }
+    /// The frame it was prepared from (requires a successful preparation).
+    const FrameInput& input() const;
+    /// The prepared planes (for the library; null unless prepared
+    /// successfully).
+    const PreparedFrameData* data() const { return m_data.get(); }
+
+private:
+    friend PreparedFrame prepare_frame(const FrameInput& frame, int nthreads);
+    std::shared_ptr<const PreparedFrameData> m_data;
+    std::string m_error;
+};
+
+/// Prepare `frame` for the cross-frame `denoise` (`PreparedFrame`), over
+/// its data window, with the checks `denoise` makes of one frame (a
+/// beauty; its guides readable and covering its data window; a motion
+/// guide of 4 channels). On failure the result `has_error()`. The
+/// prepared planes are bit-identical for any `nthreads`.
+PreparedFrame prepare_frame(const FrameInput& frame, int nthreads = 0);
+
+/// The cross-frame `denoise` of already prepared frames: the same result,
+/// bit for bit, as the form above given the frames they were prepared
+/// from, with the same checks (an unprepared frame or one that failed to
+/// prepare is an error naming it).
+bool denoise(ImageBuf& dst, const PreparedFrame& centre,
+             const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
+             ROI roi = {}, int nthreads = 0);
+/// The value form of the prepared-frame `denoise`.
+ImageBuf denoise(const PreparedFrame& centre, const std::vector<PreparedFrame>& neighbours,
+                 const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 
 /// Search radius in each neighbour frame carried by the motion guide.
 constexpr int temporal_search_radius = 2;
