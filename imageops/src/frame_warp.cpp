@@ -1,5 +1,6 @@
-// frame_warp.cpp: the motion-chained nearest-pixel map from the centre
-// frame to a neighbour frame, and the planes it carries.
+// frame_warp.cpp: the motion-chained path from a pixel of the centre frame
+// to a neighbour frame, the map of those paths, and the planes carried
+// along them.
 #include "frame_warp.h"
 
 #include "guides.h"
@@ -31,77 +32,43 @@ void step_vector(const GuideChannels& motion, int x, int y, bool forward, float&
     vy = forward ? motion.values[3][i] : -motion.values[1][i];
 }
 
-}  // namespace
+// Where pixel (x, y) of the centre lies in the frame `offset` frames away
+// (data window `source_dw`): its nearest source pixel (qx, qy), whether
+// that lies inside `source_dw`, and the motion's distance from that
+// pixel's centre (dx, dy).
+struct Source {
+    int qx, qy;
+    float dx, dy;
+    bool ok;
+};
 
-WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
-                        const ROI& region, const ROI& source_dw, int nthreads)
+Source trace(const std::vector<const GuideChannels*>& steps, int offset, const ROI& source_dw,
+             int x, int y)
 {
-    WarpMap map { Plane<int32_t>(region), Plane<int32_t>(region), Plane<float>(region),
-                  Plane<float>(region) };
     const bool forward = offset > 0;
     const bool still   = steps.empty() || !steps.front();
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            // The path from the pixel, as a displacement: the same at any
-            // data window origin.
-            float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
-            int qx = x, qy = y;
-            for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
-                if (steps[k])
-                    step_vector(*steps[k], qx, qy, forward, vx, vy);
-                px += vx;
-                py += vy;
-                qx = x + nearest(px);
-                qy = y + nearest(py);
-            }
-            const bool ok = inside(source_dw, qx, qy);
-            map.xs.at(x, y) = ok ? qx : WarpMap::no_source;
-            map.ys.at(x, y) = ok ? qy : WarpMap::no_source;
-            map.dx.at(x, y) = px - float(qx - x);
-            map.dy.at(x, y) = py - float(qy - y);
-        }
-    });
-    return map;
+    // The path from the pixel, as a displacement: the same at any data
+    // window origin.
+    float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
+    int qx = x, qy = y;
+    for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
+        if (steps[k])
+            step_vector(*steps[k], qx, qy, forward, vx, vy);
+        px += vx;
+        py += vy;
+        qx = x + nearest(px);
+        qy = y + nearest(py);
+    }
+    return { qx, qy, px - float(qx - x), py - float(qy - y), inside(source_dw, qx, qy) };
 }
 
-namespace {
-
-// Each of `values` (planes over `from`) at each pixel's nearest source,
-// over `region`; `fill` where there is none or it lies outside `from`.
-template<class T>
-std::vector<LargeVector<T>> nearest_channels(const std::vector<const LargeVector<T>*>& values,
-                                             const ROI& from, const WarpMap& map,
-                                             const ROI& region, T fill, int nthreads)
+// The bilinear taps around `s`'s point in `from`: up to four (index,
+// weight), the weights normalised over the taps inside.
+int bilinear_taps(const Source& s, const ROI& from, size_t* at, float* w)
 {
-    std::vector<LargeVector<T>> out;
-    for (size_t c = 0; c < values.size(); ++c)
-        out.emplace_back(plane_size(region));
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
-            const int sx = map.xs.values[i], sy = map.ys.values[i];
-            const bool ok = map.has_source(i) && inside(from, sx, sy);
-            const size_t at = ok ? pixel_offset(from, sx, sy) : 0;
-            for (size_t c = 0; c < values.size(); ++c)
-                out[c][o] = ok ? (*values[c])[at] : fill;
-        }
-    });
-    return out;
-}
-
-}  // namespace
-
-namespace {
-
-// The bilinear taps around pixel i's source in `from`: up to four
-// (index, weight), the weights normalised over the taps inside; with
-// `squared`, each normalised weight squared.
-int bilinear_taps(const WarpMap& map, size_t i, const ROI& from, bool squared, size_t* at,
-                  float* w)
-{
-    const float fx = map.dx.values[i], fy = map.dy.values[i];
-    const int x0 = map.xs.values[i] + (fx < 0.0f ? -1 : 0);
-    const int y0 = map.ys.values[i] + (fy < 0.0f ? -1 : 0);
+    const float fx = s.dx, fy = s.dy;
+    const int x0 = s.qx + (fx < 0.0f ? -1 : 0);
+    const int y0 = s.qy + (fy < 0.0f ? -1 : 0);
     const float ax = fx < 0.0f ? 1.0f + fx : fx, ay = fy < 0.0f ? 1.0f + fy : fy;
     int n       = 0;
     float total = 0.0f;
@@ -115,67 +82,111 @@ int bilinear_taps(const WarpMap& map, size_t i, const ROI& from, bool squared, s
             total += wt;
         }
     for (int k = 0; k < n; ++k)
-        w[k] = squared ? (w[k] / total) * (w[k] / total) : w[k] / total;
+        w[k] = w[k] / total;
     return n;
 }
 
-std::vector<LargeVector<float>> warp_channels(const std::vector<LargeVector<float>>& values,
-                                              const ROI& from, const WarpMap& map,
-                                              const ROI& region, bool squared, int nthreads)
+// The source's pixel at `o` of each plane of `planes` as the taps sample
+// it, each tap's weight squared with `squared`.
+void sample(const std::vector<LargeVector<float>>& src, std::vector<LargeVector<float>>& out,
+            size_t o, int n, const size_t* at, const float* w, bool squared)
 {
-    std::vector<LargeVector<float>> out;
-    for (size_t c = 0; c < values.size(); ++c)
-        out.emplace_back(plane_size(region));
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
-            size_t at[4];
-            float w[4];
-            const int n = map.has_source(i) ? bilinear_taps(map, i, from, squared, at, w) : 0;
-            for (size_t c = 0; c < values.size(); ++c) {
-                float v = 0.0f;
-                for (int k = 0; k < n; ++k)
-                    v += w[k] * values[c][at[k]];
-                out[c][o] = v;
-            }
-        }
-    });
+    for (size_t c = 0; c < src.size(); ++c) {
+        float v = 0.0f;
+        for (int k = 0; k < n; ++k)
+            v += (squared ? w[k] * w[k] : w[k]) * src[c][at[k]];
+        out[c][o] = v;
+    }
+}
+
+// Planes shaped as `src`'s (with its finite mask if any) over `region`.
+Planes<float> planes_like(const Planes<float>& src, const ROI& region)
+{
+    Planes<float> out(region, src.nchannels());
+    if (src.masked())
+        out.finite = Planes<float>(region, src.nchannels()).values;
     return out;
 }
 
 }  // namespace
 
-Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region,
-                          bool variance, int nthreads)
+WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
+                        const ROI& region, const ROI& source_dw, int nthreads)
 {
-    Planes<float> out;
-    out.region = region;
-    out.values = warp_channels(src.values, src.region, map, region, variance, nthreads);
-    out.finite = warp_channels(src.finite, src.region, map, region, false, nthreads);
+    WarpMap map { Plane<int32_t>(region), Plane<int32_t>(region), Plane<float>(region),
+                  Plane<float>(region) };
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const Source s  = trace(steps, offset, source_dw, x, y);
+            map.xs.at(x, y) = s.ok ? s.qx : WarpMap::no_source;
+            map.ys.at(x, y) = s.ok ? s.qy : WarpMap::no_source;
+            map.dx.at(x, y) = s.dx;
+            map.dy.at(x, y) = s.dy;
+        }
+    });
+    return map;
+}
+
+Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region,
+                          int nthreads)
+{
+    Planes<float> out = planes_like(src, region);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const size_t i = map.xs.offset(x, y), o = out.offset(x, y);
+            const Source s { map.xs.values[i], map.ys.values[i], map.dx.values[i],
+                             map.dy.values[i], map.has_source(i) };
+            size_t at[4];
+            float w[4];
+            const int n = s.ok ? bilinear_taps(s, src.region, at, w) : 0;
+            sample(src.values, out.values, o, n, at, w, false);
+            sample(src.finite, out.finite, o, n, at, w, false);
+        }
+    });
     return out;
 }
 
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const ROI& region,
-                         bool variance, int nthreads)
+CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
+                         const std::vector<const GuideChannels*>& steps, int offset,
+                         const CarryRegions& regions, int nthreads)
 {
-    return { warp_planes(src.colour, map, region, variance, nthreads), Plane<float>() };
-}
-
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const ROI& region,
-                           int nthreads)
-{
-    FeatureField out;
-    std::vector<const LargeVector<float>*> dims;
-    for (const LargeVector<float>& dim : src.dims.values)
-        dims.push_back(&dim);
-    out.dims.region = region;
-    out.dims.values = nearest_channels(dims, src.dims.region, map, region, 0.0f, nthreads);
-    if (!src.ids.values.empty()) {
-        out.ids.region = region;
-        out.ids.values = std::move(nearest_channels<Id>({ &src.ids.values }, src.ids.region, map,
-                                                        region, no_guide_id, nthreads)
-                                       .front());
-    }
+    const ROI& all = regions.colour;
+    CarriedFrame out { { planes_like(src.colour.colour, regions.colour), Plane<float>() },
+                       { planes_like(src.variance.colour, regions.variance), Plane<float>() },
+                       { Planes<float>(regions.window, src.features.dims.nchannels()), IdPlane() },
+                       planes_like(src.values, regions.window),
+                       Plane<float>(regions.window) };
+    const bool ids = !src.features.ids.values.empty();
+    if (ids)
+        out.features.ids = IdPlane(regions.window);
+    parallel_rows(all, nthreads, [&](int y) {
+        for (int x = all.xbegin; x < all.xend; ++x) {
+            const Source s = trace(steps, offset, source_dw, x, y);
+            size_t at[4];
+            float w[4];
+            const int n = s.ok ? bilinear_taps(s, source_dw, at, w) : 0;
+            const size_t oc = out.colour.colour.offset(x, y);
+            sample(src.colour.colour.values, out.colour.colour.values, oc, n, at, w, false);
+            sample(src.colour.colour.finite, out.colour.colour.finite, oc, n, at, w, false);
+            if (inside(regions.variance, x, y)) {
+                const size_t ov = out.variance.colour.offset(x, y);
+                sample(src.variance.colour.values, out.variance.colour.values, ov, n, at, w, true);
+                sample(src.variance.colour.finite, out.variance.colour.finite, ov, n, at, w,
+                       false);
+            }
+            if (!inside(regions.window, x, y))
+                continue;
+            const size_t o = out.values.offset(x, y);
+            sample(src.values.values, out.values.values, o, n, at, w, false);
+            sample(src.values.finite, out.values.finite, o, n, at, w, false);
+            const size_t q = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
+            for (size_t d = 0; d < out.features.dims.values.size(); ++d)
+                out.features.dims.values[d][o] = s.ok ? src.features.dims.values[d][q] : 0.0f;
+            if (ids)
+                out.features.ids.values[o] = s.ok ? src.features.ids.values[q] : no_guide_id;
+            out.usable.values[o] = s.ok ? 1.0f : 0.0f;
+        }
+    });
     return out;
 }
 
@@ -211,16 +222,6 @@ std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChan
         steps.push_back(i < motions.size() ? motions[i] : nullptr);
     }
     return steps;
-}
-
-Plane<float> source_mask(const WarpMap& map, const ROI& region, int nthreads)
-{
-    Plane<float> out(region);
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x)
-            out.at(x, y) = map.has_source(map.xs.offset(x, y)) ? 1.0f : 0.0f;
-    });
-    return out;
 }
 
 }  // namespace mcdenoise

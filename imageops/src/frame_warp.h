@@ -1,6 +1,6 @@
 // frame_warp.h: carrying a neighbour frame into the centre frame's pixel
-// grid through the motion guides (nearest pixel, vectors chained frame by
-// frame), for the cross-frame denoise.
+// grid through the motion guides (vectors chained frame by frame, read at
+// the nearest pixel), for the cross-frame denoise and its baseline.
 #pragma once
 
 #include <mcdenoise/temporal.h>
@@ -55,23 +55,35 @@ std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChan
 
 /// Every channel of `src` (and its finite mask) sampled bilinearly where
 /// the motion leads (the taps inside `src`'s region, their weights
-/// normalised), 0 where there is no source. With `variance`, the variance
-/// of that sample instead: the taps' values times their squared weights.
+/// normalised), 0 where there is no source.
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region,
-                          bool variance, int nthreads);
+                          int nthreads);
 
-/// Colour planes carried by `map` over `region` as `warp_planes` carries
-/// them (with `variance`, as a variance); no luminance (the NL-means
-/// average does not read it).
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region,
-                         bool variance, int nthreads);
+/// The regions of the centre frame a carried frame covers, each inside
+/// `colour`.
+struct CarryRegions {
+    OIIO::ROI colour, variance, window;
+};
 
-/// Feature dimensions and ids carried by `map` over `region`, from the
-/// nearest source pixel: no source gives 0 and an id equal to no other.
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const OIIO::ROI& region,
-                           int nthreads);
+/// A neighbour frame carried into the centre frame's pixel grid.
+struct CarriedFrame {
+    ColourPlanes colour;    ///< over the colour region (no luminance)
+    ColourPlanes variance;  ///< over the variance region (no luminance)
+    FeatureField features;  ///< over the window
+    Planes<float> values;   ///< every channel and its finite mask, over the window
+    Plane<float> usable;    ///< over the window: 1 where the pixel has a source, else 0
+};
 
-/// 1 where a pixel of `region` has a source, 0 where not.
-Plane<float> source_mask(const WarpMap& map, const OIIO::ROI& region, int nthreads);
+/// Carry `src` (the planes of the frame `offset` frames from the centre,
+/// each over that frame's data window `source_dw`) into the centre's
+/// `regions`, through the map `motion_warp_map(steps, offset, ...)` gives,
+/// in one pass: colour, values and finite masks sampled bilinearly where
+/// the motion leads (the taps inside `source_dw`, their weights
+/// normalised), the variance as that of the sample (the taps' values times
+/// their squared weights), the features and ids from the nearest source
+/// pixel; 0 (ids: an id equal to no other) where there is no source.
+CarriedFrame carry_frame(const FeatureInputs& src, const OIIO::ROI& source_dw,
+                         const std::vector<const GuideChannels*>& steps, int offset,
+                         const CarryRegions& regions, int nthreads);
 
 }  // namespace mcdenoise

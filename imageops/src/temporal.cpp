@@ -16,7 +16,6 @@
 #include "window.h"
 
 #include <algorithm>
-#include <memory>
 #include <numeric>
 #include <string>
 
@@ -29,24 +28,11 @@ namespace {
 
 constexpr const char* op_name = temporal_op;
 
-// A neighbour frame carried into the centre's regions.
-struct Neighbour {
-    ColourField colour;
-    VarianceField variance;
-    FeatureField features;
-    SumSource values;
-    Plane<float> usable;
-};
-
 // The regions of the centre frame (data window `dw`) the average reads to
 // filter `roi`, as `nlmeans` reads them: the colour (the patches grown by
 // one), the variance (the patches) and the features and values (the
 // search windows).
-struct Regions {
-    ROI colour, variance, window;
-};
-
-Regions regions(const ROI& roi, const ROI& dw)
+CarryRegions regions(const ROI& roi, const ROI& dw)
 {
     const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
     return { grow_and_clip(patches, 1, dw), patches, grow_and_clip(roi, denoise_search_radius, dw) };
@@ -100,24 +86,13 @@ bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
     return true;
 }
 
-// Carry prepared neighbour `n` into the centre's regions `r` through `map`.
-void carry_neighbour(const PreparedFrameData& n, const Regions& r, const WarpMap& map,
-                     int nthreads, Neighbour& out)
-{
-    out.colour   = warp_colour(n.planes.colour, map, r.colour, false, nthreads);
-    out.variance = warp_colour(n.planes.variance, map, r.variance, true, nthreads);
-    out.features = warp_features(n.planes.features, map, r.window, nthreads);
-    out.values   = warp_planes(n.planes.values, map, r.window, false, nthreads);
-    out.usable   = source_mask(map, r.window, nthreads);
-}
-
 // Carry every neighbour into the centre's regions `r`, in the order of
 // their offsets, so the sums do not depend on the order they are listed
 // in.
 void carry_neighbours(const PreparedFrameData& centre,
                       const std::vector<const PreparedFrameData*>& neighbours,
-                      const std::vector<int>& offsets, const Regions& r, int nthreads,
-                      std::vector<std::unique_ptr<Neighbour>>& carried)
+                      const std::vector<int>& offsets, const CarryRegions& r, int nthreads,
+                      std::vector<CarriedFrame>& carried)
 {
     std::vector<const GuideChannels*> motions;
     for (const PreparedFrameData* f : neighbours)
@@ -127,30 +102,26 @@ void carry_neighbours(const PreparedFrameData& centre,
     std::iota(order.begin(), order.end(), size_t(0));
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
-    for (size_t i : order) {
-        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]),
-                                            offsets[i], r.colour,
-                                            neighbours[i]->input.beauty->roi(), nthreads);
-        carried.push_back(std::make_unique<Neighbour>());
-        carry_neighbour(*neighbours[i], r, map, nthreads, *carried.back());
-    }
+    for (size_t i : order)
+        carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->input.beauty->roi(),
+                                      motion_steps(motions, offsets, offsets[i]), offsets[i], r,
+                                      nthreads));
 }
 
 // The values the sums read of every frame: all masked when any is (the
 // sums need them alike), the centre's through a masked copy if needed.
-const SumSource& align_masks(const SumSource& centre,
-                             const std::vector<std::unique_ptr<Neighbour>>& carried,
+const SumSource& align_masks(const SumSource& centre, std::vector<CarriedFrame>& carried,
                              SumSource& centre_copy)
 {
     const bool any = centre.masked()
                      || std::any_of(carried.begin(), carried.end(),
-                                    [](const auto& n) { return n->values.masked(); });
+                                    [](const CarriedFrame& n) { return n.values.masked(); });
     const auto ones = [](const SumSource& v) {
         return Planes<float>(v.region, v.nchannels(), 1.0f).values;
     };
-    for (const auto& n : carried)
-        if (any && !n->values.masked())
-            n->values.finite = ones(n->values);
+    for (CarriedFrame& n : carried)
+        if (any && !n.values.masked())
+            n.values.finite = ones(n.values);
     if (!any || centre.masked())
         return centre;
     centre_copy        = centre;
@@ -161,8 +132,7 @@ const SumSource& align_masks(const SumSource& centre,
 // The temporal guide, then the NL-means average of `roi` over the centre's
 // window and the neighbours' (`carried`).
 bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
-                    const std::vector<std::unique_ptr<Neighbour>>& carried, const ROI& roi,
-                    int nthreads)
+                    std::vector<CarriedFrame>& carried, const ROI& roi, int nthreads)
 {
     const FeatureInputs& c = centre.planes;
     SumSource centre_copy;
@@ -171,9 +141,9 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
                                            : temporal_still_search_radius;
     std::vector<NlmFrame> frames { { &c.colour, &c.variance, &c.features, &c.features, &values,
                                      nullptr, denoise_search_radius, true } };
-    for (const auto& n : carried)
-        frames.push_back({ &n->colour, &n->variance, &n->features, &c.features, &n->values,
-                           &n->usable, radius, false });
+    for (const CarriedFrame& n : carried)
+        frames.push_back({ &n.colour, &n.variance, &n.features, &c.features, &n.values,
+                           &n.usable, radius, false });
     // The patches and features every candidate is compared with: the
     // centre's, averaged over the frames that match them.
     const ImageBuf& clamped   = centre.frame.clamped;
@@ -224,7 +194,7 @@ bool denoise(ImageBuf& dst, const PreparedFrame& centre,
         return denoise(dst, beauty, c->input.guides, roi, nthreads);
     if (!resolve_roi(op_name, dst, beauty, roi))
         return false;
-    std::vector<std::unique_ptr<Neighbour>> carried;
+    std::vector<CarriedFrame> carried;
     carry_neighbours(*c, ns, offsets, regions(roi, beauty.roi()), nthreads, carried);
     if (!average_frames(dst, *c, carried, roi, nthreads)
         || !give_back_excess(op_name, dst, c->frame.excess, roi, beauty.roi(),

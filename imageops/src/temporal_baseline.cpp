@@ -67,7 +67,7 @@ bool warped_average(ImageBuf& dst, const FrameInput& centre, const ImageBuf& cen
             return false;
         const WarpMap map = motion_warp_map(motion_steps(motion_of, offsets, offsets[i]),
                                             offsets[i], dw, dw, nthreads);
-        const Planes<float> warped = warp_planes(channel_planes(other, nthreads), map, dw, false, nthreads);
+        const Planes<float> warped = warp_planes(channel_planes(other, nthreads), map, dw, nthreads);
         for (int y = dw.ybegin; y < dw.yend; ++y)
             for (int x = dw.xbegin; x < dw.xend; ++x) {
                 const size_t p = map.xs.offset(x, y);

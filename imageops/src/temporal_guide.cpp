@@ -5,6 +5,9 @@
 
 #include "window.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace mcdenoise {
 
 using OIIO::ROI;
@@ -25,42 +28,52 @@ TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& reg
     TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, dims), IdPlane() } };
+    // Row by row, each plane: the centre's, plus each neighbour's times its
+    // weight (squared for the variance), over the total weight (squared).
     const size_t nf = frames.size();
     parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = g.colour.colour.offset(x, y);
-            float total = 1.0f;
-            for (size_t k = 1; k < nf; ++k)
-                total += weights[k - 1].values[i];
-            // The weighted mean over the frames of plane p of `planes(f)`
-            // at (x, y), each frame's weight to the power `power`.
-            const auto mean = [&](auto&& planes, size_t p, int power) {
-                const auto& centre_planes = planes(frames[0]);
-                float sum = centre_planes.values[p][centre_planes.offset(x, y)];
-                for (size_t k = 1; k < nf; ++k) {
-                    const float w = weights[k - 1].values[i];
-                    const auto& own = planes(frames[k]);
-                    sum += (power == 2 ? w * w : w) * own.values[p][own.offset(x, y)];
-                }
-                return power == 2 ? sum / (total * total) : sum / total;
-            };
-            const auto colours  = [](const NlmFrame& f) -> const auto& { return f.colour->colour; };
-            const auto variances = [](const NlmFrame& f) -> const auto& { return f.variance->colour; };
-            const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
-            float lum = 0.0f, lum_var = 0.0f;
-            for (int c = 0; c < nc; ++c) {
-                const float u = mean(colours, size_t(c), 1);
-                const float v = mean(variances, size_t(c), 2);
-                g.colour.colour.values[size_t(c)][i]   = u;
-                g.variance.colour.values[size_t(c)][i] = v;
-                lum += lw[size_t(c)] * u;
-                lum_var += lw[size_t(c)] * lw[size_t(c)] * v;
-            }
-            for (int d = 0; d < dims; ++d)
-                g.features.dims.values[size_t(d)][i] = mean(features, size_t(d), 1);
-            g.colour.luminance.values[i]   = lum;
-            g.variance.luminance.values[i] = lum_var;
+        const int x0 = region.xbegin, n = region.width();
+        std::vector<float> total(size_t(n), 1.0f);
+        for (size_t k = 1; k < nf; ++k) {
+            const float* w = weights[k - 1].from(x0, y);
+            for (int i = 0; i < n; ++i)
+                total[size_t(i)] += w[i];
         }
+        // The weighted mean of plane p of `planes(f)` over the frames into
+        // `out`, each frame's weight squared with `squared`.
+        const auto mean = [&](auto&& planes, size_t p, bool squared, float* out) {
+            const float* c = planes(frames[0]).from(int(p), x0, y);
+            std::copy(c, c + n, out);
+            for (size_t k = 1; k < nf; ++k) {
+                const float* w = weights[k - 1].from(x0, y);
+                const float* v = planes(frames[k]).from(int(p), x0, y);
+                for (int i = 0; i < n; ++i)
+                    out[i] += (squared ? w[i] * w[i] : w[i]) * v[i];
+            }
+            for (int i = 0; i < n; ++i)
+                out[i] = squared ? out[i] / (total[size_t(i)] * total[size_t(i)])
+                                 : out[i] / total[size_t(i)];
+        };
+        const auto colours  = [](const NlmFrame& f) -> const auto& { return f.colour->colour; };
+        const auto variances = [](const NlmFrame& f) -> const auto& { return f.variance->colour; };
+        const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
+        float* lum     = g.colour.luminance.from(x0, y);
+        float* lum_var = g.variance.luminance.from(x0, y);
+        std::fill(lum, lum + n, 0.0f);
+        std::fill(lum_var, lum_var + n, 0.0f);
+        for (int c = 0; c < nc; ++c) {
+            float* u = g.colour.colour.from(c, x0, y);
+            float* v = g.variance.colour.from(c, x0, y);
+            mean(colours, size_t(c), false, u);
+            mean(variances, size_t(c), true, v);
+            const float l = lw[size_t(c)], l2 = l * l;
+            for (int i = 0; i < n; ++i) {
+                lum[i] += l * u[i];
+                lum_var[i] += l2 * v[i];
+            }
+        }
+        for (int d = 0; d < dims; ++d)
+            mean(features, size_t(d), false, g.features.dims.from(d, x0, y));
     });
     return g;
 }
