@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -269,6 +270,34 @@ TEST(Temporal, PreparedFramesGiveTheSameResult)
               std::string::npos);
     EXPECT_NE(mcd::denoise(mcd::PreparedFrame(), {}, {}).geterror().find("centre frame: not prepared"),
               std::string::npos);
+}
+
+TEST(Temporal, TallFramesAreTheSameAsStripsOfRows)
+{
+    // Frames taller than the rows the average takes at a time: the whole
+    // frame in one call equals strips of 40 rows each filtered alone (one
+    // band each), with a NaN in a neighbour (finite masks).
+    constexpr int w = 12, h = 300;
+    std::vector<ImageBuf> beauty, motion;
+    for (int f = 0; f < 3; ++f) {
+        beauty.push_back(testimg::random_image(w, h, 3, 110 + f));
+        motion.push_back(testimg::random_image(w, h, 4, 120 + f, -2.0f, 2.0f));
+    }
+    const float nan[3] = { std::nanf(""), 0.5f, 0.5f };
+    beauty[0].setpixel(4, 130, nan);
+    std::vector<mcd::PreparedFrame> frames;
+    for (int f = 0; f < 3; ++f) {
+        mcd::FrameInput in { &beauty[f], {} };
+        in.guides.motion = &motion[f];
+        frames.push_back(mcd::prepare_frame(in));
+    }
+    const ImageBuf whole = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 });
+    ASSERT_FALSE(whole.has_error()) << whole.geterror();
+    for (int y = 0; y < h; y += 40) {
+        const ROI strip(0, w, y, std::min(h, y + 40), 0, 1, 0, 3);
+        EXPECT_EQ(testimg::pixels(mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, strip), strip),
+                  testimg::pixels(whole, strip)) << "rows from " << y;
+    }
 }
 
 TEST(Temporal, DataWindowOriginAndInPlace)

@@ -28,6 +28,9 @@ namespace {
 
 constexpr const char* op_name = temporal_op;
 
+// Rows of the ROI averaged at a time (`average_frames`).
+constexpr int band_rows = 128;
+
 // The regions of the centre frame (data window `dw`) the average reads to
 // filter `roi`, as `nlmeans` reads them: the colour (the patches grown by
 // one), the variance (the patches) and the features and values (the
@@ -109,9 +112,10 @@ void carry_neighbours(const PreparedFrameData& centre,
 }
 
 // The values the sums read of every frame: all masked when any is (the
-// sums need them alike), the centre's through a masked copy if needed.
-const SumSource& align_masks(const SumSource& centre, std::vector<CarriedFrame>& carried,
-                             SumSource& centre_copy)
+// sums need them alike), the centre's (over `window`) through a masked copy
+// if needed.
+const SumSource& align_masks(const SumSource& centre, const ROI& window,
+                             std::vector<CarriedFrame>& carried, SumSource& centre_copy)
 {
     const bool any = centre.masked()
                      || std::any_of(carried.begin(), carried.end(),
@@ -124,19 +128,26 @@ const SumSource& align_masks(const SumSource& centre, std::vector<CarriedFrame>&
             n.values.finite = ones(n.values);
     if (!any || centre.masked())
         return centre;
-    centre_copy        = centre;
-    centre_copy.finite = ones(centre);
+    centre_copy = Planes<float>(window, centre.nchannels());
+    for (int ch = 0; ch < centre.nchannels(); ++ch)
+        for (int y = window.ybegin; y < window.yend; ++y)
+            std::copy_n(centre.from(ch, window.xbegin, y), window.width(),
+                        centre_copy.from(ch, window.xbegin, y));
+    centre_copy.finite = ones(centre_copy);
     return centre_copy;
 }
 
-// The temporal guide, then the NL-means average of `roi` over the centre's
-// window and the neighbours' (`carried`).
-bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
-                    std::vector<CarriedFrame>& carried, const ROI& roi, int nthreads)
+// The temporal guide, then the NL-means average of `band` over the
+// centre's window and the neighbours' (`carried`, over the band's
+// regions), into `result`.
+void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& carried,
+                  const ROI& band, int nthreads, ResultPixels& result)
 {
     const FeatureInputs& c = centre.planes;
+    const ROI dw           = centre.frame.clamped.roi();
     SumSource centre_copy;
-    const SumSource& values = align_masks(c.values, carried, centre_copy);
+    const SumSource& values = align_masks(c.values, regions(band, dw).window, carried,
+                                          centre_copy);
     const int radius = centre.has_motion() ? temporal_search_radius
                                            : temporal_still_search_radius;
     std::vector<NlmFrame> frames { { &c.colour, &c.variance, &c.features, &c.features, &values,
@@ -146,16 +157,44 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
                            &n.usable, radius, false });
     // The patches and features every candidate is compared with: the
     // centre's, averaged over the frames that match them.
-    const ImageBuf& clamped   = centre.frame.clamped;
-    const ROI dw              = clamped.roi();
     const float strength      = centre.frame.strength;
-    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(roi, denoise_patch_radius, dw),
+    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(band, denoise_patch_radius, dw),
                                                dw, denoise_patch_radius, strength, nthreads);
     for (NlmFrame& f : frames)
         f.centre_features = &guide.features;
-    return nlmeans_frames(op_name, dst, clamped, { centre.input.beauty, &clamped }, frames,
-                          guide.colour, guide.variance, denoise_patch_radius, strength, roi,
-                          nthreads);
+    nlmeans_frames(frames, guide.colour, guide.variance, dw, denoise_patch_radius, strength,
+                   nthreads, result);
+}
+
+// The average of `roi` into `dst`, band by band of `band_rows` rows: the
+// neighbours are carried into the regions of one band at a time, so their
+// planes stay small and their memory is reused from band to band.
+bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
+                    const std::vector<const PreparedFrameData*>& neighbours,
+                    const std::vector<int>& offsets, const ROI& roi, int nthreads)
+{
+    const ImageBuf& clamped = centre.frame.clamped;
+    const auto inputs       = { centre.input.beauty, &clamped };
+    ResultPixels whole, total;  // `dst` allocated over the ROI; the count of empty windows
+    if (!begin_result(op_name, dst, clamped, inputs, roi, whole))
+        return false;
+    std::vector<CarriedFrame> carried;
+    for (int y = roi.ybegin; y < roi.yend; y += band_rows) {
+        ROI band    = roi;
+        band.ybegin = y;
+        band.yend   = std::min(roi.yend, y + band_rows);
+        carried.clear();
+        carry_neighbours(centre, neighbours, offsets, regions(band, clamped.roi()), nthreads,
+                         carried);
+        ResultPixels part;
+        if (!begin_result(op_name, dst, clamped, inputs, band, part))
+            return false;
+        average_band(centre, carried, band, nthreads, part);
+        if (!finish_result(op_name, dst, part))
+            return false;
+        total.empty_windows += part.empty_windows;
+    }
+    return finish_result(op_name, dst, total);
 }
 
 // A prepared frame's data, or an error naming it (`what`).
@@ -194,9 +233,7 @@ bool denoise(ImageBuf& dst, const PreparedFrame& centre,
         return denoise(dst, beauty, c->input.guides, roi, nthreads);
     if (!resolve_roi(op_name, dst, beauty, roi))
         return false;
-    std::vector<CarriedFrame> carried;
-    carry_neighbours(*c, ns, offsets, regions(roi, beauty.roi()), nthreads, carried);
-    if (!average_frames(dst, *c, carried, roi, nthreads)
+    if (!average_frames(dst, *c, ns, offsets, roi, nthreads)
         || !give_back_excess(op_name, dst, c->frame.excess, roi, beauty.roi(),
                              premultiplied_alpha(beauty, beauty.nchannels()), nthreads))
         return false;
