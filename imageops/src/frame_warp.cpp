@@ -62,40 +62,102 @@ Source trace(const std::vector<const GuideChannels*>& steps, int offset, const R
     return { qx, qy, px - float(qx - x), py - float(qy - y), inside(source_dw, qx, qy) };
 }
 
-// The bilinear taps around `s`'s point in `from`: up to four (index,
-// weight), the weights normalised over the taps inside.
-int bilinear_taps(const Source& s, const ROI& from, size_t* at, float* w)
+// The resampling taps of a source point over the 4x4 pixels around it,
+// weighted by a kernel and normalised over the taps inside `from`; a
+// bounded sample (Keys' cubic) lies within the values of its `inner` taps,
+// the 2x2 pixels around the point.
+struct Taps {
+    int n = 0, ninner = 0;
+    size_t at[16];
+    float w[16], w2[16];  // the weights and their squares
+    size_t inner[4];
+};
+
+// A kernel's four weights at fraction t in [0, 1) of the way from pixel 1
+// to pixel 2.
+using Kernel = void (*)(float t, float* k);
+
+// Bilinear: the 2x2 pixels around the point.
+void linear_weights(float t, float* k)
 {
-    const float fx = s.dx, fy = s.dy;
-    const int x0 = s.qx + (fx < 0.0f ? -1 : 0);
-    const int y0 = s.qy + (fy < 0.0f ? -1 : 0);
-    const float ax = fx < 0.0f ? 1.0f + fx : fx, ay = fy < 0.0f ? 1.0f + fy : fy;
-    int n       = 0;
+    k[0] = 0.0f;
+    k[1] = 1.0f - t;
+    k[2] = t;
+    k[3] = 0.0f;
+}
+
+// Keys' cubic (Catmull-Rom, a = -0.5): sharper than bilinear, but its
+// negative lobes overshoot at edges unless bounded.
+void cubic_weights(float t, float* k)
+{
+    const float t2 = t * t, t3 = t2 * t;
+    k[0] = 0.5f * (-t3 + 2.0f * t2 - t);
+    k[1] = 1.5f * t3 - 2.5f * t2 + 1.0f;
+    k[2] = -1.5f * t3 + 2.0f * t2 + 0.5f * t;
+    k[3] = 0.5f * (t3 - t2);
+}
+
+Taps resampling_taps(const Source& s, const ROI& from, Kernel kernel, bool bounded)
+{
+    // From the nearest pixel, so the same at any data window origin.
+    const int bx = s.qx + (s.dx < 0.0f ? -1 : 0), by = s.qy + (s.dy < 0.0f ? -1 : 0);
+    float kx[4], ky[4];
+    kernel(s.dx < 0.0f ? 1.0f + s.dx : s.dx, kx);
+    kernel(s.dy < 0.0f ? 1.0f + s.dy : s.dy, ky);
+    Taps t;
     float total = 0.0f;
-    for (int ty = 0; ty < 2; ++ty)
-        for (int tx = 0; tx < 2; ++tx) {
-            const float wt = (tx ? ax : 1.0f - ax) * (ty ? ay : 1.0f - ay);
-            if (wt <= 0.0f || !inside(from, x0 + tx, y0 + ty))
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const int x = bx - 1 + i, y = by - 1 + j;
+            const float wt = kx[i] * ky[j];
+            if (wt == 0.0f || !inside(from, x, y))
                 continue;
-            at[n] = pixel_offset(from, x0 + tx, y0 + ty);
-            w[n++] = wt;
+            t.at[t.n]  = pixel_offset(from, x, y);
+            t.w[t.n++] = wt;
             total += wt;
+            if (bounded && (i == 1 || i == 2) && (j == 1 || j == 2))
+                t.inner[t.ninner++] = t.at[t.n - 1];
         }
-    for (int k = 0; k < n; ++k)
-        w[k] = w[k] / total;
-    return n;
+    for (int k = 0; k < t.n; ++k) {
+        t.w[k] /= total;
+        t.w2[k] = t.w[k] * t.w[k];
+    }
+    return t;
+}
+
+// The bilinear taps of a source (a point with no source: none).
+Taps linear_taps(const Source& s, const ROI& from)
+{
+    return s.ok ? resampling_taps(s, from, linear_weights, false) : Taps();
+}
+
+// The bounded cubic taps of a source (a point with no source: none).
+Taps cubic_taps(const Source& s, const ROI& from)
+{
+    return s.ok ? resampling_taps(s, from, cubic_weights, true) : Taps();
 }
 
 // The source's pixel at `o` of each plane of `planes` as the taps sample
-// it, each tap's weight squared with `squared`.
+// it, within the inner taps' values if the taps are bounded; with
+// `squared` (a variance), the taps' values times their squared weights.
 void sample(const std::vector<LargeVector<float>>& src, std::vector<LargeVector<float>>& out,
-            size_t o, int n, const size_t* at, const float* w, bool squared)
+            size_t o, const Taps& t, bool squared)
 {
+    const float* w = squared ? t.w2 : t.w;
     for (size_t c = 0; c < src.size(); ++c) {
-        float v = 0.0f;
-        for (int k = 0; k < n; ++k)
-            v += (squared ? w[k] * w[k] : w[k]) * src[c][at[k]];
-        out[c][o] = v;
+        const float* v = src[c].data();
+        float sum      = 0.0f;
+        for (int k = 0; k < t.n; ++k)
+            sum += w[k] * v[t.at[k]];
+        if (!squared && t.ninner > 0) {
+            float lo = v[t.inner[0]], hi = lo;
+            for (int k = 1; k < t.ninner; ++k) {
+                lo = std::min(lo, v[t.inner[k]]);
+                hi = std::max(hi, v[t.inner[k]]);
+            }
+            sum = std::min(hi, std::max(lo, sum));
+        }
+        out[c][o] = sum;
     }
 }
 
@@ -136,11 +198,9 @@ Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const RO
             const size_t i = map.xs.offset(x, y), o = out.offset(x, y);
             const Source s { map.xs.values[i], map.ys.values[i], map.dx.values[i],
                              map.dy.values[i], map.has_source(i) };
-            size_t at[4];
-            float w[4];
-            const int n = s.ok ? bilinear_taps(s, src.region, at, w) : 0;
-            sample(src.values, out.values, o, n, at, w, false);
-            sample(src.finite, out.finite, o, n, at, w, false);
+            const Taps t = cubic_taps(s, src.region);
+            sample(src.values, out.values, o, t, false);
+            sample(src.finite, out.finite, o, t, false);
         }
     });
     return out;
@@ -162,23 +222,21 @@ CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
     parallel_rows(all, nthreads, [&](int y) {
         for (int x = all.xbegin; x < all.xend; ++x) {
             const Source s = trace(steps, offset, source_dw, x, y);
-            size_t at[4];
-            float w[4];
-            const int n = s.ok ? bilinear_taps(s, source_dw, at, w) : 0;
+            const Taps t = linear_taps(s, source_dw);
             const size_t oc = out.colour.colour.offset(x, y);
-            sample(src.colour.colour.values, out.colour.colour.values, oc, n, at, w, false);
-            sample(src.colour.colour.finite, out.colour.colour.finite, oc, n, at, w, false);
+            sample(src.colour.colour.values, out.colour.colour.values, oc, t, false);
+            sample(src.colour.colour.finite, out.colour.colour.finite, oc, t, false);
             if (inside(regions.variance, x, y)) {
                 const size_t ov = out.variance.colour.offset(x, y);
-                sample(src.variance.colour.values, out.variance.colour.values, ov, n, at, w, true);
-                sample(src.variance.colour.finite, out.variance.colour.finite, ov, n, at, w,
-                       false);
+                sample(src.variance.colour.values, out.variance.colour.values, ov, t, true);
+                sample(src.variance.colour.finite, out.variance.colour.finite, ov, t, false);
             }
             if (!inside(regions.window, x, y))
                 continue;
             const size_t o = out.values.offset(x, y);
-            sample(src.values.values, out.values.values, o, n, at, w, false);
-            sample(src.values.finite, out.values.finite, o, n, at, w, false);
+            const Taps sharp = cubic_taps(s, source_dw);
+            sample(src.values.values, out.values.values, o, sharp, false);
+            sample(src.values.finite, out.values.finite, o, sharp, false);
             const size_t q = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
             for (size_t d = 0; d < out.features.dims.values.size(); ++d)
                 out.features.dims.values[d][o] = s.ok ? src.features.dims.values[d][q] : 0.0f;

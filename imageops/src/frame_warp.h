@@ -53,9 +53,9 @@ bool load_motions(const char* op, OIIO::ImageBuf& dst, const FrameInput& centre,
 std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChannels*>& motions,
                                                const std::vector<int>& offsets, int offset);
 
-/// Every channel of `src` (and its finite mask) sampled bilinearly where
-/// the motion leads (the taps inside `src`'s region, their weights
-/// normalised), 0 where there is no source.
+/// Every channel of `src` (and its finite mask) sampled where the motion
+/// leads as `carry_frame` samples the values (Keys' cubic, bounded by the
+/// 2x2 pixels around the point), 0 where there is no source.
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region,
                           int nthreads);
 
@@ -77,11 +77,16 @@ struct CarriedFrame {
 /// Carry `src` (the planes of the frame `offset` frames from the centre,
 /// each over that frame's data window `source_dw`) into the centre's
 /// `regions`, through the map `motion_warp_map(steps, offset, ...)` gives,
-/// in one pass: colour, values and finite masks sampled bilinearly where
-/// the motion leads (the taps inside `source_dw`, their weights
-/// normalised), the variance as that of the sample (the taps' values times
-/// their squared weights), the features and ids from the nearest source
-/// pixel; 0 (ids: an id equal to no other) where there is no source.
+/// in one pass: the colour sampled bilinearly where the motion leads (the
+/// taps inside `source_dw`, their weights normalised), the variance as
+/// that of the sample (the taps' values times their squared weights); the
+/// values and finite masks with Keys' cubic (Catmull-Rom, a = -0.5, 4x4
+/// taps, normalised the same way), kept within the values of the 2x2
+/// pixels around the point: sharper than bilinear, without overshoot; the
+/// features and ids from the nearest source pixel; 0 (ids: an id equal to
+/// no other) where there is no source. The patches are compared on the
+/// smoother bilinear colour (less noise, better matches); what is averaged
+/// keeps the detail bilinear sampling blurs.
 CarriedFrame carry_frame(const FeatureInputs& src, const OIIO::ROI& source_dw,
                          const std::vector<const GuideChannels*>& steps, int offset,
                          const CarryRegions& regions, int nthreads);

@@ -28,9 +28,11 @@ struct FrameInput {
 /// 1. Every frame goes through `denoise`'s first steps on its own: the
 ///    firefly clamp, and the variance from its guide, halves or estimate.
 /// 2. Each neighbour is carried into the centre's pixel grid through the
-///    motion guides: colour, variance and every channel sampled bilinearly
-///    where the motion leads (the variance as that of the sample), the
-///    features at the nearest pixel. For |offset| > 1 the vectors of the
+///    motion guides: the colour its patches are compared by sampled
+///    bilinearly where the motion leads (its variance as that of the
+///    sample), every channel averaged with Keys' cubic (Catmull-Rom, kept
+///    within the 2x2 pixels around the point: sharper, with no overshoot),
+///    the features at the nearest pixel. For |offset| > 1 the vectors of the
 ///    frames in between are chained; a frame on the way that is left out
 ///    or has no motion guide repeats the previous step's vector. Without a
 ///    motion guide on the centre the neighbours are taken as they are, and
