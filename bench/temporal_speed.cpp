@@ -115,8 +115,8 @@ int main(int argc, char** argv)
         time_ms(prepare, [&] {
             const mcdenoise::PreparedFrame p = mcdenoise::prepare_frame(centre, nthreads);
             ImageBuf status;
-            if (p.has_error())
-                status.errorfmt("{}", p.geterror());
+            if (!p.error.empty())
+                status.errorfmt("{}", p.error);
             return status;
         });
         time_ms(from_prepared, [&] {

@@ -93,7 +93,7 @@ bool denoise_layers(const Call& call)
 /// its window holds it.
 const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
 {
-    if (!frame.prepared->initialized())
+    if (!frame.prepared->data && frame.prepared->error.empty())
         *frame.prepared = mcdenoise::prepare_frame({ frame.beauty, library_guides(*frame.guides) }, nthreads);
     return *frame.prepared;
 }

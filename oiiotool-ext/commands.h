@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace mcdenoise {
-class PreparedFrame;
+struct PreparedFrame;
 }
 
 namespace mcdtool {

@@ -251,7 +251,7 @@ TEST(Temporal, PreparedFramesGiveTheSameResult)
         frames.back().guides.normal = &normal[f];
         frames.back().guides.motion = &motion[f];
         prepared.push_back(mcd::prepare_frame(frames.back(), 1 + f % 2));
-        ASSERT_FALSE(prepared.back().has_error()) << prepared.back().geterror();
+        ASSERT_TRUE(prepared.back().data) << prepared.back().error;
     }
     for (int c = 1; c < 3; ++c) {
         const ImageBuf given = mcd::denoise(frames[c], { frames[c - 1], frames[c + 1] }, { -1, 1 });
@@ -265,7 +265,8 @@ TEST(Temporal, PreparedFramesGiveTheSameResult)
               testimg::pixels(mcd::denoise(frames[1], { frames[0] }, { -1 }), corner));
     // An unprepared frame, or one whose preparation failed, is named.
     const mcd::PreparedFrame failed = mcd::prepare_frame({}, 0);
-    EXPECT_TRUE(failed.has_error());
+    EXPECT_FALSE(failed.data);
+    EXPECT_NE(failed.error.find("no beauty"), std::string::npos);
     EXPECT_NE(mcd::denoise(prepared[1], { failed }, { 1 }).geterror().find("offset 1"),
               std::string::npos);
     EXPECT_NE(mcd::denoise(mcd::PreparedFrame(), {}, {}).geterror().find("centre frame: not prepared"),

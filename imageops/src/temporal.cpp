@@ -201,11 +201,11 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
 const PreparedFrameData* prepared_data(ImageBuf& dst, const PreparedFrame& f,
                                        const std::string& what)
 {
-    if (f.has_error())
-        dst.errorfmt("{}: {}: {}", op_name, what, f.geterror());
-    else if (!f.data())
+    if (!f.error.empty())
+        dst.errorfmt("{}: {}: {}", op_name, what, f.error);
+    else if (!f.data)
         dst.errorfmt("{}: {}: not prepared", op_name, what);
-    return f.data();
+    return f.data.get();
 }
 
 }  // namespace

@@ -51,18 +51,16 @@ bool check_frame(ImageBuf& dst, const FrameInput& frame, const std::string& what
                || check_guide(op.c_str(), "motion", dst, *frame.guides.motion, 4, roi));
 }
 
-const FrameInput& PreparedFrame::input() const { return m_data->input; }
-
 PreparedFrame prepare_frame(const FrameInput& frame, int nthreads)
 {
     PreparedFrame out;
     ImageBuf errors;
     auto data = std::make_shared<PreparedFrameData>();
     if (prepare(errors, frame, nthreads, *data))
-        out.m_data = std::move(data);
+        out.data = std::move(data);
     else
-        out.m_error = errors.has_error() ? errors.geterror()
-                                         : std::string(temporal_op) + ": frame: preparing failed";
+        out.error = errors.has_error() ? errors.geterror()
+                                       : std::string(temporal_op) + ": frame: preparing failed";
     return out;
 }
 

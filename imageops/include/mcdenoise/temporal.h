@@ -79,30 +79,19 @@ struct PreparedFrameData;
 /// as a neighbour, instead of preparing it again for each. Copies share
 /// the prepared planes, which never change. The frame's beauty and guide
 /// images must stay alive and unchanged while it is used.
-class PreparedFrame {
-public:
-    /// True once `prepare_frame` has made it, even with an error.
-    bool initialized() const { return m_data != nullptr || !m_error.empty(); }
-    /// True if preparing failed; `geterror()` says why.
-    bool has_error() const { return !m_error.empty(); }
-    const std::string& geterror() const { return m_error; }
-    /// The frame it was prepared from (requires a successful preparation).
-    const FrameInput& input() const;
-    /// The prepared planes (for the library; null unless prepared
-    /// successfully).
-    const PreparedFrameData* data() const { return m_data.get(); }
-
-private:
-    friend PreparedFrame prepare_frame(const FrameInput& frame, int nthreads);
-    std::shared_ptr<const PreparedFrameData> m_data;
-    std::string m_error;
+struct PreparedFrame {
+    /// The prepared planes (the library's own type); null unless prepared
+    /// successfully.
+    std::shared_ptr<const PreparedFrameData> data;
+    /// Why preparing failed; empty if it succeeded or was not attempted.
+    std::string error;
 };
 
 /// Prepare `frame` for the cross-frame `denoise` (`PreparedFrame`), over
 /// its data window, with the checks `denoise` makes of one frame (a
 /// beauty; its guides readable and covering its data window; a motion
-/// guide of 4 channels). On failure the result `has_error()`. The
-/// prepared planes are bit-identical for any `nthreads`.
+/// guide of 4 channels). On failure the result has no `data` and an
+/// `error`. The prepared planes are bit-identical for any `nthreads`.
 PreparedFrame prepare_frame(const FrameInput& frame, int nthreads = 0);
 
 /// The cross-frame `denoise` of already prepared frames: the same result,
