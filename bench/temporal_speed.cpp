@@ -1,8 +1,11 @@
 // temporal_speed.cpp: the cost of the cross-frame denoise against
 // single-frame `denoise`, in the same run: frame 2 of five consecutive
 // testrender frames (every AOV, the motion among them), denoised alone and
-// with its neighbours +-1 and +-2, alternately, the fastest of each kept;
-// and the warped-average baseline's own step (per-frame results given).
+// with its neighbours +-1 and +-2, alternately, the fastest of each kept:
+// in one call from the frames, and as a sequence runs it (each frame
+// prepared once: one `prepare_frame` and the call of prepared frames per
+// frame); and the warped-average baseline's own step (per-frame results
+// given).
 //
 // Usage: temporal_speed FRAME0.exr ... FRAME4.exr [--threads N] [--repeats R]
 #include <mcdenoise/mcdenoise.h>
@@ -96,13 +99,28 @@ int main(int argc, char** argv)
         results.push_back(mcdenoise::denoise(r.beauty, r.guides(), {}, nthreads));
     const std::vector<const ImageBuf*> others { &results[0], &results[1], &results[3],
                                                 &results[4] };
-    Times single, cross, average;
+    std::vector<mcdenoise::PreparedFrame> prepared;
+    for (const testimg::Render& r : frames)
+        prepared.push_back(mcdenoise::prepare_frame(input(r), nthreads));
+    const std::vector<mcdenoise::PreparedFrame> prepared_neighbours { prepared[0], prepared[1],
+                                                                      prepared[3], prepared[4] };
+    Times single, cross, prepare, from_prepared, average;
     for (int k = 0; k < repeats; ++k) {
         time_ms(single, [&] {
             return mcdenoise::denoise(*centre.beauty, centre.guides, {}, nthreads);
         });
         time_ms(cross, [&] {
             return mcdenoise::denoise(centre, neighbours, offsets, {}, nthreads);
+        });
+        time_ms(prepare, [&] {
+            const mcdenoise::PreparedFrame p = mcdenoise::prepare_frame(centre, nthreads);
+            ImageBuf status;
+            if (!p.error.empty())
+                status.errorfmt("{}", p.error);
+            return status;
+        });
+        time_ms(from_prepared, [&] {
+            return mcdenoise::denoise(prepared[2], prepared_neighbours, offsets, {}, nthreads);
         });
         time_ms(average, [&] {
             ImageBuf out;
@@ -121,7 +139,11 @@ int main(int argc, char** argv)
                     cpu / single.cpu);
     };
     row("single-frame", single.wall, single.cpu);
-    row("cross-frame, N = 2", cross.wall, cross.cpu);
+    row("cross-frame, N = 2, one call (5 frames prepared)", cross.wall, cross.cpu);
+    row("prepare_frame (one frame)", prepare.wall, prepare.cpu);
+    row("cross-frame, N = 2, of prepared frames", from_prepared.wall, from_prepared.cpu);
+    row("cross-frame, N = 2, in a sequence (1 prepare_frame + the call)",
+        prepare.wall + from_prepared.wall, prepare.cpu + from_prepared.cpu);
     row("baseline: 1 denoise + warped average", single.wall + average.wall,
         single.cpu + average.cpu);
     return 0;

@@ -88,22 +88,31 @@ bool denoise_layers(const Call& call)
     return true;
 }
 
-/// --denoise: the cross-frame form when the call has neighbours (with no
-/// neighbour on disk it equals the single-frame form, bit for bit).
+/// The preparation of `frame` for the cross-frame denoise, made now unless
+/// its window holds it.
+const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
+{
+    if (!frame.prepared->data && frame.prepared->error.empty())
+        *frame.prepared = mcdenoise::prepare_frame({ frame.beauty, library_guides(*frame.guides) }, nthreads);
+    return *frame.prepared;
+}
+
+/// --denoise: the cross-frame form when the call has neighbours, of the
+/// frames as their window prepared them (with no neighbour on disk the
+/// single-frame form, which that equals bit for bit).
 bool denoise_call(const Call& c)
 {
     if (c.layers && !c.layers->empty())
         return denoise_layers(c);
-    if (!c.neighbours)
+    if (!c.neighbours || c.neighbours->empty())
         return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);
-    std::vector<mcdenoise::FrameInput> neighbours;
+    std::vector<mcdenoise::PreparedFrame> neighbours;
     std::vector<int> offsets;
-    for (const Neighbour& n : *c.neighbours) {
-        neighbours.push_back({ n.beauty, library_guides(*n.guides) });
+    for (const WindowFrame& n : *c.neighbours) {
+        neighbours.push_back(prepared(n, c.nthreads));
         offsets.push_back(n.offset);
     }
-    return mcdenoise::denoise(c.dst, mcdenoise::FrameInput{ &c.beauty, feature_guides(c) }, neighbours, offsets, {},
-                              c.nthreads);
+    return mcdenoise::denoise(c.dst, prepared(*c.centre, c.nthreads), neighbours, offsets, {}, c.nthreads);
 }
 
 }  // namespace

@@ -14,6 +14,10 @@
 #include <string_view>
 #include <vector>
 
+namespace mcdenoise {
+struct PreparedFrame;
+}
+
 namespace mcdtool {
 
 using OIIO::ImageBuf;
@@ -39,12 +43,15 @@ struct Guides {
     std::map<Role, std::string> sources;  ///< "render.exr: N.X,N.Y,N.Z"
 };
 
-/// A neighbouring frame of the one being run (with --temporal): its beauty
-/// as read and its guides.
-struct Neighbour {
-    int offset;  ///< frame number minus the centre's
+/// A frame of a --temporal window as --denoise takes it: its beauty as
+/// read, its guides, and where the window keeps its preparation for the
+/// cross-frame denoise (temporal.h), made by the first call that needs it,
+/// so a frame is prepared once for all the windows it is in.
+struct WindowFrame {
+    int offset;  ///< frame number minus the centre's (0: the centre)
     const ImageBuf* beauty;
     const Guides* guides;
+    mcdenoise::PreparedFrame* prepared;
 };
 
 /// What a command's library call receives.
@@ -56,7 +63,10 @@ struct Call {
     int nthreads;
     /// With --temporal, the neighbouring frames found on disk (maybe none):
     /// --denoise then makes the cross-frame call; nullptr otherwise.
-    const std::vector<Neighbour>* neighbours = nullptr;
+    const std::vector<WindowFrame>* neighbours = nullptr;
+    /// With `neighbours`: the frame itself as its window holds it (the
+    /// call's beauty is its beauty as read).
+    const WindowFrame* centre = nullptr;
     /// The light passes (--aovs) a command that takes them denoises in place.
     std::vector<ImageBuf>* layers = nullptr;
 

@@ -103,25 +103,33 @@ void report_light_passes(const std::string& input_path, const LightLayers& layer
 }
 
 /// With -v and --temporal: the neighbouring frames --denoise takes.
-void report_neighbours(int frame, const std::vector<Neighbour>& neighbours)
+void report_neighbours(int frame, const std::vector<WindowFrame>& neighbours)
 {
     std::vector<std::string> frames;
-    for (const Neighbour& n : neighbours)
+    for (const WindowFrame& n : neighbours)
         frames.push_back(std::to_string(frame + n.offset));
     std::printf("mcdtool: --temporal : frame %d with frames %s\n", frame,
                 frames.empty() ? "(none on disk)" : OIIO::Strutil::join(frames, ", ").c_str());
 }
 
+/// The frames of a --temporal window a command takes: the frame itself and
+/// its neighbours on disk.
+struct WindowFrames {
+    WindowFrame centre{};
+    std::vector<WindowFrame> neighbours;
+};
+
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
-/// errors forwarded; with `verbose`, its time is printed.
+/// errors forwarded; with `verbose`, its time is printed. With `window`,
+/// the command takes its frames (--denoise across frames).
 ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, LightLayers& layers,
-                     int nthreads, bool verbose, RunStats& stats, const std::vector<Neighbour>* neighbours)
+                     int nthreads, bool verbose, RunStats& stats, const WindowFrames* window)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, nthreads, neighbours,
-               command.takes_layers ? &layers.images : nullptr };
+    Call call{ dst, current, guides, step.values, nthreads, window ? &window->neighbours : nullptr,
+               window ? &window->centre : nullptr, command.takes_layers ? &layers.images : nullptr };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
@@ -144,7 +152,7 @@ struct LoadedFrame {
     std::unique_ptr<FrameWindow> own_window;  ///< a window for this frame alone (no shared one)
     std::unique_ptr<FrameInputs> own_inputs;  ///< the inputs, when not held by a window
     const FrameInputs* inputs = nullptr;
-    std::vector<Neighbour> neighbours;
+    WindowFrames window;  ///< with --temporal
 };
 
 /// Reads `frame`, from `window` with --temporal (a window of its own if
@@ -162,7 +170,8 @@ LoadedFrame load_frame(const Options& options, std::optional<int> frame, RunStat
         window = loaded.own_window.get();
     }
     loaded.inputs = &window->centre(*frame);
-    loaded.neighbours = window->neighbours(*frame);
+    loaded.window.centre = window->centre_frame(*frame);
+    loaded.window.neighbours = window->neighbours(*frame);
     return loaded;
 }
 
@@ -185,7 +194,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     if (options.verbose)
         report_channels(input_path, input, found, guides);
     if (options.verbose && options.temporal > 0 && frame)
-        report_neighbours(*frame, loaded.neighbours);
+        report_neighbours(*frame, loaded.window.neighbours);
     for (const Step& step : options.steps)  // before any work: fail fast on a missing guide
         if (step.command)
             require_guides(*step.command, guides, input_path, input.spec(), found);
@@ -208,7 +217,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         if (step.command) {
             const bool across_frames = options.temporal > 0 && frame && first_command;
             current = run_command(step, current, guides, layers, options.threads, options.verbose, stats,
-                                  across_frames ? &loaded.neighbours : nullptr);
+                                  across_frames ? &loaded.window : nullptr);
             first_command = false;
             continue;
         }

@@ -10,13 +10,19 @@ namespace mcdtool {
 namespace {
 
 /// Float bytes a frame holds at its peak: the input and its output copy,
-/// the beauty before, current and being written, and the guides.
-uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides)
+/// the beauty before, current and being written, and the guides; with
+/// --temporal, also its preparation for the cross-frame denoise (the
+/// clamped beauty, its excess and its values: 3 planes per beauty
+/// channel; colour and variance with their luminance, 8; at most 7
+/// feature and 4 motion planes).
+uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides, bool temporal)
 {
-    constexpr uint64_t beauty_buffers = 3;
+    constexpr uint64_t beauty_buffers = 3, prepared_per_channel = 3, prepared_planes = 8 + 7 + 4;
     uint64_t channels = 2 * uint64_t(input.nchannels()) + beauty_buffers * found.beauty.size();
     for (const auto& [role, guide] : guides.images)
         channels += uint64_t(guide.nchannels());
+    if (temporal)
+        channels += prepared_per_channel * found.beauty.size() + prepared_planes;
     return float_bytes(input.spec().image_pixels(), channels);
 }
 
@@ -39,8 +45,12 @@ std::unique_ptr<FrameInputs> read_frame_inputs(const Options& options, std::opti
     warn_if_display_referred(input, "input");
     inputs->found = discover_channels(input.spec(), options.beauty_channels, inputs->path);
     inputs->guides = load_guides(input, inputs->path, inputs->found, options, path_of, *inputs->files);
-    require_memory(frame_bytes(input, inputs->found, inputs->guides), memory_limit, inputs->path,
-                   "this frame (input, output copy, 3 beauty buffers and the guides, as float)");
+    require_memory(frame_bytes(input, inputs->found, inputs->guides, options.temporal > 0 && frame), memory_limit,
+                   inputs->path,
+                   options.temporal > 0 && frame
+                       ? "this frame (input, output copy, 3 beauty buffers, the guides and the frame prepared for "
+                         "--temporal, as float)"
+                       : "this frame (input, output copy, 3 beauty buffers and the guides, as float)");
     inputs->beauty = extract_channels(input, inputs->found.beauty);
     return inputs;
 }

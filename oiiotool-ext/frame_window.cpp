@@ -55,25 +55,33 @@ void require_compatible(const FrameInputs& centre, const FrameInputs& neighbour,
 
 }  // namespace
 
-const FrameInputs& FrameWindow::get(int frame)
+FrameWindow::Held& FrameWindow::get(int frame)
 {
     auto found = held_.find(frame);
     if (found == held_.end())
-        found = held_.emplace(frame, read_frame_inputs(options_, frame, stats_)).first;
-    return *found->second;
+        found = held_.emplace(frame, Held{ read_frame_inputs(options_, frame, stats_),
+                                           std::make_unique<mcdenoise::PreparedFrame>() })
+                    .first;
+    return found->second;
 }
 
 const FrameInputs& FrameWindow::centre(int frame)
 {
     for (auto it = held_.begin(); it != held_.end();)
         it = std::abs(it->first - frame) > options_.temporal ? held_.erase(it) : std::next(it);
-    return get(frame);
+    return *get(frame).inputs;
 }
 
-std::vector<Neighbour> FrameWindow::neighbours(int frame)
+WindowFrame FrameWindow::centre_frame(int frame)
 {
-    const FrameInputs& centre_inputs = get(frame);
-    std::vector<Neighbour> found;
+    Held& held = get(frame);
+    return WindowFrame{ 0, &held.inputs->beauty, &held.inputs->guides, held.prepared.get() };
+}
+
+std::vector<WindowFrame> FrameWindow::neighbours(int frame)
+{
+    const FrameInputs& centre_inputs = *get(frame).inputs;
+    std::vector<WindowFrame> found;
     for (int offset = -options_.temporal; offset <= options_.temporal; ++offset) {
         const int other = frame + offset;
         if (offset == 0)
@@ -84,15 +92,16 @@ std::vector<Neighbour> FrameWindow::neighbours(int frame)
                          "left out\n", frame, other, path.c_str());
             continue;
         }
-        const FrameInputs& inputs = [&]() -> const FrameInputs& {
+        Held& held = [&]() -> Held& {
             try {
                 return get(other);
             } catch (const RunError& error) {
                 throw RunError(format("--temporal : neighbour frame {}: {}", other, error.what()));
             }
         }();
+        const FrameInputs& inputs = *held.inputs;
         require_compatible(centre_inputs, inputs, frame, other);
-        found.push_back(Neighbour{ offset, &inputs.beauty, &inputs.guides });
+        found.push_back(WindowFrame{ offset, &inputs.beauty, &inputs.guides, held.prepared.get() });
     }
     return found;
 }

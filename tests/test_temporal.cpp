@@ -2,8 +2,9 @@
 // sequences: no neighbours is `denoise`, a still noiseless shot stays
 // as it is, a shifted shot averages the pixels its motion points at (chained
 // over two frames, a missing frame's vector repeated) or that the search
-// finds without motion, another surface in a neighbour gets no weight, and the
-// result is the same for any thread count, ROI split and neighbour order.
+// finds without motion, another surface in a neighbour gets no weight, the
+// result is the same for any thread count, ROI split and neighbour order,
+// and frames prepared once give it too.
 #include <mcdenoise/mcdenoise.h>
 
 #include "support/guide_images.h"
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -227,6 +229,76 @@ TEST(Temporal, SameForAnyThreadsSplitAndOrder)
     const ImageBuf rest = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, bottom, 2);
     EXPECT_EQ(testimg::pixels(split, top), testimg::pixels(one, top));
     EXPECT_EQ(testimg::pixels(rest, bottom), testimg::pixels(one, bottom));
+}
+
+TEST(Temporal, PreparedFramesGiveTheSameResult)
+{
+    // A shot of four frames, each prepared once and used in every window
+    // it is in, as the centre and as a neighbour; a NaN in one frame
+    // (a finite mask on its values only).
+    std::vector<ImageBuf> beauty, normal, motion;
+    for (int f = 0; f < 4; ++f) {
+        beauty.push_back(testimg::random_image(width, height, 4, 70 + f));
+        normal.push_back(testimg::wavy_normals(width, height, 80 + f));
+        motion.push_back(testimg::random_image(width, height, 4, 90 + f, -2.0f, 2.0f));
+    }
+    const float nan[4] = { std::nanf(""), 0.5f, 0.5f, 1.0f };
+    beauty[2].setpixel(5, 6, nan);
+    std::vector<mcd::FrameInput> frames;
+    std::vector<mcd::PreparedFrame> prepared;
+    for (int f = 0; f < 4; ++f) {
+        frames.push_back({ &beauty[f], {} });
+        frames.back().guides.normal = &normal[f];
+        frames.back().guides.motion = &motion[f];
+        prepared.push_back(mcd::prepare_frame(frames.back(), 1 + f % 2));
+        ASSERT_TRUE(prepared.back().data) << prepared.back().error;
+    }
+    for (int c = 1; c < 3; ++c) {
+        const ImageBuf given = mcd::denoise(frames[c], { frames[c - 1], frames[c + 1] }, { -1, 1 });
+        const ImageBuf from_prepared = mcd::denoise(prepared[c], { prepared[c + 1], prepared[c - 1] },
+                                                    { 1, -1 }, {}, 2);
+        ASSERT_FALSE(from_prepared.has_error()) << from_prepared.geterror();
+        EXPECT_TRUE(testimg::bit_identical(given, from_prepared)) << "centre " << c;
+    }
+    const ROI corner(3, 14, 2, 9, 0, 1, 0, 4);
+    EXPECT_EQ(testimg::pixels(mcd::denoise(prepared[1], { prepared[0] }, { -1 }, corner), corner),
+              testimg::pixels(mcd::denoise(frames[1], { frames[0] }, { -1 }), corner));
+    // An unprepared frame, or one whose preparation failed, is named.
+    const mcd::PreparedFrame failed = mcd::prepare_frame({}, 0);
+    EXPECT_FALSE(failed.data);
+    EXPECT_NE(failed.error.find("no beauty"), std::string::npos);
+    EXPECT_NE(mcd::denoise(prepared[1], { failed }, { 1 }).geterror().find("offset 1"),
+              std::string::npos);
+    EXPECT_NE(mcd::denoise(mcd::PreparedFrame(), {}, {}).geterror().find("centre frame: not prepared"),
+              std::string::npos);
+}
+
+TEST(Temporal, TallFramesAreTheSameAsStripsOfRows)
+{
+    // Frames taller than the rows the average takes at a time: the whole
+    // frame in one call equals strips of 40 rows each filtered alone (one
+    // band each), with a NaN in a neighbour (finite masks).
+    constexpr int w = 12, h = 300;
+    std::vector<ImageBuf> beauty, motion;
+    for (int f = 0; f < 3; ++f) {
+        beauty.push_back(testimg::random_image(w, h, 3, 110 + f));
+        motion.push_back(testimg::random_image(w, h, 4, 120 + f, -2.0f, 2.0f));
+    }
+    const float nan[3] = { std::nanf(""), 0.5f, 0.5f };
+    beauty[0].setpixel(4, 130, nan);
+    std::vector<mcd::PreparedFrame> frames;
+    for (int f = 0; f < 3; ++f) {
+        mcd::FrameInput in { &beauty[f], {} };
+        in.guides.motion = &motion[f];
+        frames.push_back(mcd::prepare_frame(in));
+    }
+    const ImageBuf whole = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 });
+    ASSERT_FALSE(whole.has_error()) << whole.geterror();
+    for (int y = 0; y < h; y += 40) {
+        const ROI strip(0, w, y, std::min(h, y + 40), 0, 1, 0, 3);
+        EXPECT_EQ(testimg::pixels(mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, strip), strip),
+                  testimg::pixels(whole, strip)) << "rows from " << y;
+    }
 }
 
 TEST(Temporal, DataWindowOriginAndInPlace)

@@ -29,9 +29,9 @@ TEST(TemporalQuality, CameraMoveN2WithMotion)
 {
     const testimg::ShotFigures f = testimg::truck_figures(dir());
     ASSERT_TRUE(f.error.empty()) << f.error;
-    // measured: relMSE 0.70x, temporal error 0.64x, disoccluded 0.68x of per-frame
-    EXPECT_LT(f.cross.rel_mse, 0.75 * f.per_frame.rel_mse);
-    EXPECT_LT(f.cross.temporal, 0.70 * f.per_frame.temporal);
+    // measured: relMSE 0.61x, temporal error 0.61x, disoccluded 0.67x of per-frame
+    EXPECT_LT(f.cross.rel_mse, 0.65 * f.per_frame.rel_mse);
+    EXPECT_LT(f.cross.temporal, 0.65 * f.per_frame.temporal);
     EXPECT_LT(f.cross.region, 1.1 * f.per_frame.region) << "disoccluded pixels";
     for (size_t i = 0; i < f.evaluated.size(); ++i)
         EXPECT_LT(f.cross.frame_rel_mse[i], f.per_frame.frame_rel_mse[i])
@@ -46,7 +46,7 @@ TEST(TemporalQuality, MovingObjectLeavesNoGhost)
 {
     const testimg::ShotFigures f = testimg::object_figures(dir());
     ASSERT_TRUE(f.error.empty()) << f.error;
-    // measured: left-behind region 0.65x of per-frame, the baseline's 8.9x
+    // measured: left-behind region 0.67x of per-frame, the baseline's 9.0x
     EXPECT_LE(f.cross.region, f.per_frame.region) << "ghost where the object and shadow were";
     EXPECT_LT(f.cross.region, f.baseline.region);
     EXPECT_LT(f.cross.rel_mse, f.per_frame.rel_mse);

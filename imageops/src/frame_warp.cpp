@@ -1,5 +1,6 @@
-// frame_warp.cpp: the motion-chained nearest-pixel map from the centre
-// frame to a neighbour frame, and the planes it carries.
+// frame_warp.cpp: the motion-chained path from a pixel of the centre frame
+// to a neighbour frame, the map of those paths, and the planes carried
+// along them.
 #include "frame_warp.h"
 
 #include "guides.h"
@@ -31,6 +32,144 @@ void step_vector(const GuideChannels& motion, int x, int y, bool forward, float&
     vy = forward ? motion.values[3][i] : -motion.values[1][i];
 }
 
+// Where pixel (x, y) of the centre lies in the frame `offset` frames away
+// (data window `source_dw`): its nearest source pixel (qx, qy), whether
+// that lies inside `source_dw`, and the motion's distance from that
+// pixel's centre (dx, dy).
+struct Source {
+    int qx, qy;
+    float dx, dy;
+    bool ok;
+};
+
+Source trace(const std::vector<const GuideChannels*>& steps, int offset, const ROI& source_dw,
+             int x, int y)
+{
+    const bool forward = offset > 0;
+    const bool still   = steps.empty() || !steps.front();
+    // The path from the pixel, as a displacement: the same at any data
+    // window origin.
+    float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
+    int qx = x, qy = y;
+    for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
+        if (steps[k])
+            step_vector(*steps[k], qx, qy, forward, vx, vy);
+        px += vx;
+        py += vy;
+        qx = x + nearest(px);
+        qy = y + nearest(py);
+    }
+    return { qx, qy, px - float(qx - x), py - float(qy - y), inside(source_dw, qx, qy) };
+}
+
+// The resampling taps of a source point over the 4x4 pixels around it,
+// weighted by a kernel and normalised over the taps inside `from`; a
+// bounded sample (Keys' cubic) lies within the values of its `inner` taps,
+// the 2x2 pixels around the point.
+struct Taps {
+    int n = 0, ninner = 0;
+    size_t at[16];
+    float w[16], w2[16];  // the weights and their squares
+    size_t inner[4];
+};
+
+// A kernel's four weights at fraction t in [0, 1) of the way from pixel 1
+// to pixel 2.
+using Kernel = void (*)(float t, float* k);
+
+// Bilinear: the 2x2 pixels around the point.
+void linear_weights(float t, float* k)
+{
+    k[0] = 0.0f;
+    k[1] = 1.0f - t;
+    k[2] = t;
+    k[3] = 0.0f;
+}
+
+// Keys' cubic (Catmull-Rom, a = -0.5): sharper than bilinear, but its
+// negative lobes overshoot at edges unless bounded.
+void cubic_weights(float t, float* k)
+{
+    const float t2 = t * t, t3 = t2 * t;
+    k[0] = 0.5f * (-t3 + 2.0f * t2 - t);
+    k[1] = 1.5f * t3 - 2.5f * t2 + 1.0f;
+    k[2] = -1.5f * t3 + 2.0f * t2 + 0.5f * t;
+    k[3] = 0.5f * (t3 - t2);
+}
+
+Taps resampling_taps(const Source& s, const ROI& from, Kernel kernel, bool bounded)
+{
+    // From the nearest pixel, so the same at any data window origin.
+    const int bx = s.qx + (s.dx < 0.0f ? -1 : 0), by = s.qy + (s.dy < 0.0f ? -1 : 0);
+    float kx[4], ky[4];
+    kernel(s.dx < 0.0f ? 1.0f + s.dx : s.dx, kx);
+    kernel(s.dy < 0.0f ? 1.0f + s.dy : s.dy, ky);
+    Taps t;
+    float total = 0.0f;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const int x = bx - 1 + i, y = by - 1 + j;
+            const float wt = kx[i] * ky[j];
+            if (wt == 0.0f || !inside(from, x, y))
+                continue;
+            t.at[t.n]  = pixel_offset(from, x, y);
+            t.w[t.n++] = wt;
+            total += wt;
+            if (bounded && (i == 1 || i == 2) && (j == 1 || j == 2))
+                t.inner[t.ninner++] = t.at[t.n - 1];
+        }
+    for (int k = 0; k < t.n; ++k) {
+        t.w[k] /= total;
+        t.w2[k] = t.w[k] * t.w[k];
+    }
+    return t;
+}
+
+// The bilinear taps of a source (a point with no source: none).
+Taps linear_taps(const Source& s, const ROI& from)
+{
+    return s.ok ? resampling_taps(s, from, linear_weights, false) : Taps();
+}
+
+// The bounded cubic taps of a source (a point with no source: none).
+Taps cubic_taps(const Source& s, const ROI& from)
+{
+    return s.ok ? resampling_taps(s, from, cubic_weights, true) : Taps();
+}
+
+// The source's pixel at `o` of each plane of `planes` as the taps sample
+// it, within the inner taps' values if the taps are bounded; with
+// `squared` (a variance), the taps' values times their squared weights.
+void sample(const std::vector<LargeVector<float>>& src, std::vector<LargeVector<float>>& out,
+            size_t o, const Taps& t, bool squared)
+{
+    const float* w = squared ? t.w2 : t.w;
+    for (size_t c = 0; c < src.size(); ++c) {
+        const float* v = src[c].data();
+        float sum      = 0.0f;
+        for (int k = 0; k < t.n; ++k)
+            sum += w[k] * v[t.at[k]];
+        if (!squared && t.ninner > 0) {
+            float lo = v[t.inner[0]], hi = lo;
+            for (int k = 1; k < t.ninner; ++k) {
+                lo = std::min(lo, v[t.inner[k]]);
+                hi = std::max(hi, v[t.inner[k]]);
+            }
+            sum = std::min(hi, std::max(lo, sum));
+        }
+        out[c][o] = sum;
+    }
+}
+
+// Planes shaped as `src`'s (with its finite mask if any) over `region`.
+Planes<float> planes_like(const Planes<float>& src, const ROI& region)
+{
+    Planes<float> out(region, src.nchannels());
+    if (src.masked())
+        out.finite = Planes<float>(region, src.nchannels()).values;
+    return out;
+}
+
 }  // namespace
 
 WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offset,
@@ -38,144 +177,74 @@ WarpMap motion_warp_map(const std::vector<const GuideChannels*>& steps, int offs
 {
     WarpMap map { Plane<int32_t>(region), Plane<int32_t>(region), Plane<float>(region),
                   Plane<float>(region) };
-    const bool forward = offset > 0;
-    const bool still   = steps.empty() || !steps.front();
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
-            // The path from the pixel, as a displacement: the same at any
-            // data window origin.
-            float px = 0.0f, py = 0.0f, vx = 0.0f, vy = 0.0f;
-            int qx = x, qy = y;
-            for (size_t k = 0; !still && k < steps.size() && inside(source_dw, qx, qy); ++k) {
-                if (steps[k])
-                    step_vector(*steps[k], qx, qy, forward, vx, vy);
-                px += vx;
-                py += vy;
-                qx = x + nearest(px);
-                qy = y + nearest(py);
-            }
-            const bool ok = inside(source_dw, qx, qy);
-            map.xs.at(x, y) = ok ? qx : WarpMap::no_source;
-            map.ys.at(x, y) = ok ? qy : WarpMap::no_source;
-            map.dx.at(x, y) = px - float(qx - x);
-            map.dy.at(x, y) = py - float(qy - y);
+            const Source s  = trace(steps, offset, source_dw, x, y);
+            map.xs.at(x, y) = s.ok ? s.qx : WarpMap::no_source;
+            map.ys.at(x, y) = s.ok ? s.qy : WarpMap::no_source;
+            map.dx.at(x, y) = s.dx;
+            map.dy.at(x, y) = s.dy;
         }
     });
     return map;
 }
 
-namespace {
-
-// Each of `values` (planes over `from`) at each pixel's nearest source,
-// over `region`; `fill` where there is none or it lies outside `from`.
-template<class T>
-std::vector<LargeVector<T>> nearest_channels(const std::vector<const LargeVector<T>*>& values,
-                                             const ROI& from, const WarpMap& map,
-                                             const ROI& region, T fill, int nthreads)
-{
-    std::vector<LargeVector<T>> out;
-    for (size_t c = 0; c < values.size(); ++c)
-        out.emplace_back(plane_size(region));
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
-            const int sx = map.xs.values[i], sy = map.ys.values[i];
-            const bool ok = map.has_source(i) && inside(from, sx, sy);
-            const size_t at = ok ? pixel_offset(from, sx, sy) : 0;
-            for (size_t c = 0; c < values.size(); ++c)
-                out[c][o] = ok ? (*values[c])[at] : fill;
-        }
-    });
-    return out;
-}
-
-}  // namespace
-
-namespace {
-
-// The bilinear taps around pixel i's source in `from`: up to four
-// (index, weight), the weights normalised over the taps inside; with
-// `squared`, each normalised weight squared.
-int bilinear_taps(const WarpMap& map, size_t i, const ROI& from, bool squared, size_t* at,
-                  float* w)
-{
-    const float fx = map.dx.values[i], fy = map.dy.values[i];
-    const int x0 = map.xs.values[i] + (fx < 0.0f ? -1 : 0);
-    const int y0 = map.ys.values[i] + (fy < 0.0f ? -1 : 0);
-    const float ax = fx < 0.0f ? 1.0f + fx : fx, ay = fy < 0.0f ? 1.0f + fy : fy;
-    int n       = 0;
-    float total = 0.0f;
-    for (int ty = 0; ty < 2; ++ty)
-        for (int tx = 0; tx < 2; ++tx) {
-            const float wt = (tx ? ax : 1.0f - ax) * (ty ? ay : 1.0f - ay);
-            if (wt <= 0.0f || !inside(from, x0 + tx, y0 + ty))
-                continue;
-            at[n] = pixel_offset(from, x0 + tx, y0 + ty);
-            w[n++] = wt;
-            total += wt;
-        }
-    for (int k = 0; k < n; ++k)
-        w[k] = squared ? (w[k] / total) * (w[k] / total) : w[k] / total;
-    return n;
-}
-
-std::vector<LargeVector<float>> warp_channels(const std::vector<LargeVector<float>>& values,
-                                              const ROI& from, const WarpMap& map,
-                                              const ROI& region, bool squared, int nthreads)
-{
-    std::vector<LargeVector<float>> out;
-    for (size_t c = 0; c < values.size(); ++c)
-        out.emplace_back(plane_size(region));
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = map.xs.offset(x, y), o = pixel_offset(region, x, y);
-            size_t at[4];
-            float w[4];
-            const int n = map.has_source(i) ? bilinear_taps(map, i, from, squared, at, w) : 0;
-            for (size_t c = 0; c < values.size(); ++c) {
-                float v = 0.0f;
-                for (int k = 0; k < n; ++k)
-                    v += w[k] * values[c][at[k]];
-                out[c][o] = v;
-            }
-        }
-    });
-    return out;
-}
-
-}  // namespace
-
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const ROI& region,
-                          bool variance, int nthreads)
+                          int nthreads)
 {
-    Planes<float> out;
-    out.region = region;
-    out.values = warp_channels(src.values, src.region, map, region, variance, nthreads);
-    out.finite = warp_channels(src.finite, src.region, map, region, false, nthreads);
+    Planes<float> out = planes_like(src, region);
+    parallel_rows(region, nthreads, [&](int y) {
+        for (int x = region.xbegin; x < region.xend; ++x) {
+            const size_t i = map.xs.offset(x, y), o = out.offset(x, y);
+            const Source s { map.xs.values[i], map.ys.values[i], map.dx.values[i],
+                             map.dy.values[i], map.has_source(i) };
+            const Taps t = cubic_taps(s, src.region);
+            sample(src.values, out.values, o, t, false);
+            sample(src.finite, out.finite, o, t, false);
+        }
+    });
     return out;
 }
 
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const ROI& region,
-                         bool variance, int nthreads)
+CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
+                         const std::vector<const GuideChannels*>& steps, int offset,
+                         const CarryRegions& regions, int nthreads)
 {
-    return { warp_planes(src.colour, map, region, variance, nthreads), Plane<float>() };
-}
-
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const ROI& region,
-                           int nthreads)
-{
-    FeatureField out;
-    std::vector<const LargeVector<float>*> dims;
-    for (const LargeVector<float>& dim : src.dims.values)
-        dims.push_back(&dim);
-    out.dims.region = region;
-    out.dims.values = nearest_channels(dims, src.dims.region, map, region, 0.0f, nthreads);
-    if (!src.ids.values.empty()) {
-        out.ids.region = region;
-        out.ids.values = std::move(nearest_channels<Id>({ &src.ids.values }, src.ids.region, map,
-                                                        region, no_guide_id, nthreads)
-                                       .front());
-    }
+    const ROI& all = regions.colour;
+    CarriedFrame out { { planes_like(src.colour.colour, regions.colour), Plane<float>() },
+                       { planes_like(src.variance.colour, regions.variance), Plane<float>() },
+                       { Planes<float>(regions.window, src.features.dims.nchannels()), IdPlane() },
+                       planes_like(src.values, regions.window),
+                       Plane<float>(regions.window) };
+    const bool ids = !src.features.ids.values.empty();
+    if (ids)
+        out.features.ids = IdPlane(regions.window);
+    parallel_rows(all, nthreads, [&](int y) {
+        for (int x = all.xbegin; x < all.xend; ++x) {
+            const Source s = trace(steps, offset, source_dw, x, y);
+            const Taps t = linear_taps(s, source_dw);
+            const size_t oc = out.colour.colour.offset(x, y);
+            sample(src.colour.colour.values, out.colour.colour.values, oc, t, false);
+            sample(src.colour.colour.finite, out.colour.colour.finite, oc, t, false);
+            if (inside(regions.variance, x, y)) {
+                const size_t ov = out.variance.colour.offset(x, y);
+                sample(src.variance.colour.values, out.variance.colour.values, ov, t, true);
+                sample(src.variance.colour.finite, out.variance.colour.finite, ov, t, false);
+            }
+            if (!inside(regions.window, x, y))
+                continue;
+            const size_t o = out.values.offset(x, y);
+            const Taps sharp = cubic_taps(s, source_dw);
+            sample(src.values.values, out.values.values, o, sharp, false);
+            sample(src.values.finite, out.values.finite, o, sharp, false);
+            const size_t q = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
+            for (size_t d = 0; d < out.features.dims.values.size(); ++d)
+                out.features.dims.values[d][o] = s.ok ? src.features.dims.values[d][q] : 0.0f;
+            if (ids)
+                out.features.ids.values[o] = s.ok ? src.features.ids.values[q] : no_guide_id;
+            out.usable.values[o] = s.ok ? 1.0f : 0.0f;
+        }
+    });
     return out;
 }
 
@@ -197,9 +266,8 @@ bool load_motions(const char* op, ImageBuf& dst, const FrameInput& centre,
     return true;
 }
 
-std::vector<const GuideChannels*> motion_steps(
-    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
-    int offset)
+std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChannels*>& motions,
+                                               const std::vector<int>& offsets, int offset)
 {
     std::vector<const GuideChannels*> steps;
     const int sign = offset > 0 ? 1 : -1;
@@ -209,19 +277,9 @@ std::vector<const GuideChannels*> motion_steps(
         const auto at = std::find(offsets.begin(), offsets.end(), sign * k);
         const size_t i = k == 0 ? 0 : at == offsets.end() ? motions.size()
                                                           : 1 + size_t(at - offsets.begin());
-        steps.push_back(i < motions.size() ? motions[i].get() : nullptr);
+        steps.push_back(i < motions.size() ? motions[i] : nullptr);
     }
     return steps;
-}
-
-Plane<float> source_mask(const WarpMap& map, const ROI& region, int nthreads)
-{
-    Plane<float> out(region);
-    parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x)
-            out.at(x, y) = map.has_source(map.xs.offset(x, y)) ? 1.0f : 0.0f;
-    });
-    return out;
 }
 
 }  // namespace mcdenoise

@@ -1,6 +1,6 @@
 // frame_warp.h: carrying a neighbour frame into the centre frame's pixel
-// grid through the motion guides (nearest pixel, vectors chained frame by
-// frame), for the cross-frame denoise.
+// grid through the motion guides (vectors chained frame by frame, read at
+// the nearest pixel), for the cross-frame denoise and its baseline.
 #pragma once
 
 #include <mcdenoise/temporal.h>
@@ -47,31 +47,48 @@ bool load_motions(const char* op, OIIO::ImageBuf& dst, const FrameInput& centre,
                   std::vector<std::unique_ptr<GuideChannels>>& motions);
 
 /// The `steps` of `motion_warp_map` from the centre to the frame at
-/// `offset`, from `motions` (as `load_motions` gives them for neighbours at
-/// `offsets`): null for a frame on the way that is missing or has no motion.
-std::vector<const GuideChannels*> motion_steps(
-    const std::vector<std::unique_ptr<GuideChannels>>& motions, const std::vector<int>& offsets,
-    int offset);
+/// `offset`, from `motions` (the centre's, then those of the neighbours at
+/// `offsets`, in order; null for a frame without one): null for a frame on
+/// the way that is missing or has no motion.
+std::vector<const GuideChannels*> motion_steps(const std::vector<const GuideChannels*>& motions,
+                                               const std::vector<int>& offsets, int offset);
 
-/// Every channel of `src` (and its finite mask) sampled bilinearly where
-/// the motion leads (the taps inside `src`'s region, their weights
-/// normalised), 0 where there is no source. With `variance`, the variance
-/// of that sample instead: the taps' values times their squared weights.
+/// Every channel of `src` (and its finite mask) sampled where the motion
+/// leads as `carry_frame` samples the values (Keys' cubic, bounded by the
+/// 2x2 pixels around the point), 0 where there is no source.
 Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const OIIO::ROI& region,
-                          bool variance, int nthreads);
+                          int nthreads);
 
-/// Colour planes carried by `map` over `region` as `warp_planes` carries
-/// them (with `variance`, as a variance); no luminance (the NL-means
-/// average does not read it).
-ColourPlanes warp_colour(const ColourPlanes& src, const WarpMap& map, const OIIO::ROI& region,
-                         bool variance, int nthreads);
+/// The regions of the centre frame a carried frame covers, each inside
+/// `colour`.
+struct CarryRegions {
+    OIIO::ROI colour, variance, window;
+};
 
-/// Feature dimensions and ids carried by `map` over `region`, from the
-/// nearest source pixel: no source gives 0 and an id equal to no other.
-FeatureField warp_features(const FeatureField& src, const WarpMap& map, const OIIO::ROI& region,
-                           int nthreads);
+/// A neighbour frame carried into the centre frame's pixel grid.
+struct CarriedFrame {
+    ColourPlanes colour;    ///< over the colour region (no luminance)
+    ColourPlanes variance;  ///< over the variance region (no luminance)
+    FeatureField features;  ///< over the window
+    Planes<float> values;   ///< every channel and its finite mask, over the window
+    Plane<float> usable;    ///< over the window: 1 where the pixel has a source, else 0
+};
 
-/// 1 where a pixel of `region` has a source, 0 where not.
-Plane<float> source_mask(const WarpMap& map, const OIIO::ROI& region, int nthreads);
+/// Carry `src` (the planes of the frame `offset` frames from the centre,
+/// each over that frame's data window `source_dw`) into the centre's
+/// `regions`, through the map `motion_warp_map(steps, offset, ...)` gives,
+/// in one pass: the colour sampled bilinearly where the motion leads (the
+/// taps inside `source_dw`, their weights normalised), the variance as
+/// that of the sample (the taps' values times their squared weights); the
+/// values and finite masks with Keys' cubic (Catmull-Rom, a = -0.5, 4x4
+/// taps, normalised the same way), kept within the values of the 2x2
+/// pixels around the point: sharper than bilinear, without overshoot; the
+/// features and ids from the nearest source pixel; 0 (ids: an id equal to
+/// no other) where there is no source. The patches are compared on the
+/// smoother bilinear colour (less noise, better matches); what is averaged
+/// keeps the detail bilinear sampling blurs.
+CarriedFrame carry_frame(const FeatureInputs& src, const OIIO::ROI& source_dw,
+                         const std::vector<const GuideChannels*>& steps, int offset,
+                         const CarryRegions& regions, int nthreads);
 
 }  // namespace mcdenoise

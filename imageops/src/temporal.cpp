@@ -1,7 +1,7 @@
-// temporal.cpp: the cross-frame denoise: each frame prepared as `denoise`
-// prepares it, the neighbours carried into the centre's pixel grid, the
-// temporal guide, then one NL-means average over the centre's window and
-// the neighbours' windows.
+// temporal.cpp: the cross-frame denoise: the frames prepared
+// (temporal_frame.h), the neighbours carried into the centre's pixel grid,
+// the temporal guide, then one NL-means average over the centre's window
+// and the neighbours' windows.
 #include <mcdenoise/temporal.h>
 
 #include "denoise_frame.h"
@@ -11,11 +11,11 @@
 #include "guides.h"
 #include "nlmeans_frames.h"
 #include "operation.h"
+#include "temporal_frame.h"
 #include "temporal_guide.h"
 #include "window.h"
 
 #include <algorithm>
-#include <memory>
 #include <numeric>
 #include <string>
 
@@ -26,16 +26,20 @@ using OIIO::ROI;
 
 namespace {
 
-constexpr const char* op_name = "denoise";
+constexpr const char* op_name = temporal_op;
 
-// A neighbour frame carried into the centre's regions.
-struct Neighbour {
-    ColourField colour;
-    VarianceField variance;
-    FeatureField features;
-    SumSource values;
-    Plane<float> usable;
-};
+// Rows of the ROI averaged at a time (`average_frames`).
+constexpr int band_rows = 128;
+
+// The regions of the centre frame (data window `dw`) the average reads to
+// filter `roi`, as `nlmeans` reads them: the colour (the patches grown by
+// one), the variance (the patches) and the features and values (the
+// search windows).
+CarryRegions regions(const ROI& roi, const ROI& dw)
+{
+    const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
+    return { grow_and_clip(patches, 1, dw), patches, grow_and_clip(roi, denoise_search_radius, dw) };
+}
 
 // Which guides a frame has that `denoise` reads, as flags in the order of
 // `Guides`.
@@ -51,21 +55,6 @@ bool same_window(const ROI& a, const ROI& b)
 {
     return a.xbegin == b.xbegin && a.xend == b.xend && a.ybegin == b.ybegin && a.yend == b.yend
            && a.zbegin == b.zbegin && a.zend == b.zend;
-}
-
-// The checks of one frame's inputs against `roi`, its errors prefixed with
-// `what` (the frame).
-bool check_frame(ImageBuf& dst, const FrameInput& frame, const std::string& what,
-                 const ROI& roi)
-{
-    const std::string op = std::string(op_name) + ": " + what;
-    if (!frame.beauty) {
-        dst.errorfmt("{}: no beauty", op);
-        return false;
-    }
-    return check_denoise_guides(op.c_str(), dst, *frame.beauty, frame.guides, roi)
-           && (!frame.guides.motion
-               || check_guide(op.c_str(), "motion", dst, *frame.guides.motion, 4, roi));
 }
 
 bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
@@ -100,97 +89,164 @@ bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
     return true;
 }
 
-// Prepare neighbour `n` over its data window and carry it into `centre`'s
-// regions through `map`.
-bool load_neighbour(ImageBuf& dst, const FrameInput& n, const FeatureInputs& centre,
-                    const WarpMap& map, int nthreads, Neighbour& out)
+// Carry every neighbour into the centre's regions `r`, in the order of
+// their offsets, so the sums do not depend on the order they are listed
+// in.
+void carry_neighbours(const PreparedFrameData& centre,
+                      const std::vector<const PreparedFrameData*>& neighbours,
+                      const std::vector<int>& offsets, const CarryRegions& r, int nthreads,
+                      std::vector<CarriedFrame>& carried)
 {
-    ROI dw    = n.beauty->roi();
-    dw.chbegin = 0;
-    dw.chend   = n.beauty->nchannels();
-    DenoiseFrame frame;
-    FeatureInputs own;
-    if (!prepare_denoise_frame(dst, *n.beauty, n.beauty->nchannels(), n.guides, dw, nthreads,
-                               frame)
-        || !load_feature_inputs(op_name, dst, frame.clamped, frame.guides,
-                                temporal_feature_sigmas, dw, dw, nthreads, own))
-        return false;
-    const ROI search = centre.values.region;
-    out.colour   = warp_colour(own.colour, map, centre.colour.region(), false, nthreads);
-    out.variance = warp_colour(own.variance, map, centre.variance.region(), true, nthreads);
-    out.features = warp_features(own.features, map, search, nthreads);
-    out.values   = warp_planes(own.values, map, search, false, nthreads);
-    out.usable   = source_mask(map, search, nthreads);
-    return true;
-}
-
-// Give every frame's values a finite mask when any has one, so the sums
-// treat them alike.
-void align_masks(std::vector<SumSource*> values)
-{
-    const bool any = std::any_of(values.begin(), values.end(),
-                                 [](const SumSource* v) { return v->masked(); });
-    for (SumSource* v : values)
-        if (any && !v->masked())
-            v->finite = Planes<float>(v->region, v->nchannels(), 1.0f).values;
-}
-
-// Load every neighbour into the centre's regions (those of `fin`), in the
-// order of their offsets, so the sums do not depend on the order they are
-// listed in.
-bool load_neighbours(ImageBuf& dst, const FrameInput& centre,
-                     const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets,
-                     const FeatureInputs& fin, int nthreads,
-                     std::vector<std::unique_ptr<Neighbour>>& loaded)
-{
-    std::vector<std::unique_ptr<GuideChannels>> motions;
-    if (!load_motions(op_name, dst, centre, neighbours, nthreads, motions))
-        return false;
+    std::vector<const GuideChannels*> motions;
+    for (const PreparedFrameData* f : neighbours)
+        motions.push_back(f->has_motion() ? &f->motion : nullptr);
+    motions.insert(motions.begin(), centre.has_motion() ? &centre.motion : nullptr);
     std::vector<size_t> order(neighbours.size());
     std::iota(order.begin(), order.end(), size_t(0));
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
-    for (size_t i : order) {
-        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]),
-                                            offsets[i], fin.colour.region(),
-                                            neighbours[i].beauty->roi(), nthreads);
-        loaded.push_back(std::make_unique<Neighbour>());
-        if (!load_neighbour(dst, neighbours[i], fin, map, nthreads, *loaded.back()))
-            return false;
-    }
-    return true;
+    for (size_t i : order)
+        carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->input.beauty->roi(),
+                                      motion_steps(motions, offsets, offsets[i]), offsets[i], r,
+                                      nthreads));
 }
 
-// The temporal guide, then the NL-means average of `roi` over the centre's
-// window (`fin`, prepared as `c`) and the neighbours' (`loaded`).
-bool average_frames(ImageBuf& dst, const FrameInput& centre, const DenoiseFrame& c,
-                    FeatureInputs& fin, const std::vector<std::unique_ptr<Neighbour>>& loaded,
-                    const ROI& roi, int nthreads)
+// The values the sums read of every frame: all masked when any is (the
+// sums need them alike), the centre's (over `window`) through a masked copy
+// if needed.
+const SumSource& align_masks(const SumSource& centre, const ROI& window,
+                             std::vector<CarriedFrame>& carried, SumSource& centre_copy)
 {
-    std::vector<SumSource*> values { &fin.values };
-    for (const auto& n : loaded)
-        values.push_back(&n->values);
-    align_masks(values);
-    const int radius = centre.guides.motion ? temporal_search_radius
-                                            : temporal_still_search_radius;
-    std::vector<NlmFrame> frames { { &fin.colour, &fin.variance, &fin.features, &fin.features,
-                                     &fin.values, nullptr, denoise_search_radius, true } };
-    for (const auto& n : loaded)
-        frames.push_back({ &n->colour, &n->variance, &n->features, &fin.features, &n->values,
-                           &n->usable, radius, false });
+    const bool any = centre.masked()
+                     || std::any_of(carried.begin(), carried.end(),
+                                    [](const CarriedFrame& n) { return n.values.masked(); });
+    const auto ones = [](const SumSource& v) {
+        return Planes<float>(v.region, v.nchannels(), 1.0f).values;
+    };
+    for (CarriedFrame& n : carried)
+        if (any && !n.values.masked())
+            n.values.finite = ones(n.values);
+    if (!any || centre.masked())
+        return centre;
+    centre_copy = Planes<float>(window, centre.nchannels());
+    for (int ch = 0; ch < centre.nchannels(); ++ch)
+        for (int y = window.ybegin; y < window.yend; ++y)
+            std::copy_n(centre.from(ch, window.xbegin, y), window.width(),
+                        centre_copy.from(ch, window.xbegin, y));
+    centre_copy.finite = ones(centre_copy);
+    return centre_copy;
+}
+
+// The temporal guide, then the NL-means average of `band` over the
+// centre's window and the neighbours' (`carried`, over the band's
+// regions), into `result`.
+void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& carried,
+                  const ROI& band, int nthreads, ResultPixels& result)
+{
+    const FeatureInputs& c = centre.planes;
+    const ROI dw           = centre.frame.clamped.roi();
+    SumSource centre_copy;
+    const SumSource& values = align_masks(c.values, regions(band, dw).window, carried,
+                                          centre_copy);
+    const int radius = centre.has_motion() ? temporal_search_radius
+                                           : temporal_still_search_radius;
+    std::vector<NlmFrame> frames { { &c.colour, &c.variance, &c.features, &c.features, &values,
+                                     nullptr, denoise_search_radius, true } };
+    for (const CarriedFrame& n : carried)
+        frames.push_back({ &n.colour, &n.variance, &n.features, &c.features, &n.values,
+                           &n.usable, radius, false });
     // The patches and features every candidate is compared with: the
     // centre's, averaged over the frames that match them.
-    const ROI dw              = c.clamped.roi();
-    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(roi, denoise_patch_radius, dw),
-                                               dw, denoise_patch_radius, c.strength, nthreads);
+    const float strength      = centre.frame.strength;
+    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(band, denoise_patch_radius, dw),
+                                               dw, denoise_patch_radius, strength, nthreads);
     for (NlmFrame& f : frames)
         f.centre_features = &guide.features;
-    return nlmeans_frames(op_name, dst, c.clamped, { centre.beauty, &c.clamped }, frames,
-                          guide.colour, guide.variance, denoise_patch_radius, c.strength, roi,
-                          nthreads);
+    nlmeans_frames(frames, guide.colour, guide.variance, dw, denoise_patch_radius, strength,
+                   nthreads, result);
+}
+
+// The average of `roi` into `dst`, band by band of `band_rows` rows: the
+// neighbours are carried into the regions of one band at a time, so their
+// planes stay small and their memory is reused from band to band.
+bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
+                    const std::vector<const PreparedFrameData*>& neighbours,
+                    const std::vector<int>& offsets, const ROI& roi, int nthreads)
+{
+    const ImageBuf& clamped = centre.frame.clamped;
+    const auto inputs       = { centre.input.beauty, &clamped };
+    ResultPixels whole, total;  // `dst` allocated over the ROI; the count of empty windows
+    if (!begin_result(op_name, dst, clamped, inputs, roi, whole))
+        return false;
+    std::vector<CarriedFrame> carried;
+    for (int y = roi.ybegin; y < roi.yend; y += band_rows) {
+        ROI band    = roi;
+        band.ybegin = y;
+        band.yend   = std::min(roi.yend, y + band_rows);
+        carried.clear();
+        carry_neighbours(centre, neighbours, offsets, regions(band, clamped.roi()), nthreads,
+                         carried);
+        ResultPixels part;
+        if (!begin_result(op_name, dst, clamped, inputs, band, part))
+            return false;
+        average_band(centre, carried, band, nthreads, part);
+        if (!finish_result(op_name, dst, part))
+            return false;
+        total.empty_windows += part.empty_windows;
+    }
+    return finish_result(op_name, dst, total);
+}
+
+// A prepared frame's data, or an error naming it (`what`).
+const PreparedFrameData* prepared_data(ImageBuf& dst, const PreparedFrame& f,
+                                       const std::string& what)
+{
+    if (!f.error.empty())
+        dst.errorfmt("{}: {}: {}", op_name, what, f.error);
+    else if (!f.data)
+        dst.errorfmt("{}: {}: not prepared", op_name, what);
+    return f.data.get();
 }
 
 }  // namespace
+
+bool denoise(ImageBuf& dst, const PreparedFrame& centre,
+             const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
+             ROI roi, int nthreads)
+{
+    const PreparedFrameData* c = prepared_data(dst, centre, "centre frame");
+    std::vector<const PreparedFrameData*> ns;
+    std::vector<FrameInput> inputs;
+    for (size_t i = 0; c && i < neighbours.size(); ++i) {
+        const std::string what = i < offsets.size()
+                                     ? "neighbour frame at offset " + std::to_string(offsets[i])
+                                     : "neighbour frame " + std::to_string(i);
+        ns.push_back(prepared_data(dst, neighbours[i], what));
+        if (!ns.back())
+            return false;
+        inputs.push_back(ns.back()->input);
+    }
+    if (!c || !check_neighbours(dst, c->input, inputs, offsets))
+        return false;
+    const ImageBuf& beauty = *c->input.beauty;
+    if (ns.empty())
+        return denoise(dst, beauty, c->input.guides, roi, nthreads);
+    if (!resolve_roi(op_name, dst, beauty, roi))
+        return false;
+    if (!average_frames(dst, *c, ns, offsets, roi, nthreads)
+        || !give_back_excess(op_name, dst, c->frame.excess, roi, beauty.roi(),
+                             premultiplied_alpha(beauty, beauty.nchannels()), nthreads))
+        return false;
+    dst.specmod().attribute("mcdenoise:denoise_frames", int(ns.size()) + 1);
+    return true;
+}
+
+ImageBuf denoise(const PreparedFrame& centre, const std::vector<PreparedFrame>& neighbours,
+                 const std::vector<int>& offsets, ROI roi, int nthreads)
+{
+    return value_form(
+        [&](ImageBuf& dst) { return denoise(dst, centre, neighbours, offsets, roi, nthreads); });
+}
 
 bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInput>& neighbours,
              const std::vector<int>& offsets, ROI roi, int nthreads)
@@ -203,29 +259,15 @@ bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInp
         return false;
     if (neighbours.empty())
         return denoise(dst, *centre.beauty, centre.guides, roi, nthreads);
-    const ImageBuf& beauty = *centre.beauty;
-    if (!resolve_roi(op_name, dst, beauty, roi) || !check_frame(dst, centre, "centre frame", roi))
+    if (!resolve_roi(op_name, dst, *centre.beauty, roi)
+        || !check_frame(dst, centre, "centre frame", centre.beauty->roi()))
         return false;
-    DenoiseFrame c;
-    FeatureInputs fin;
-    if (!prepare_denoise_frame(dst, beauty, beauty.nchannels(), centre.guides,
-                               denoise_region(beauty, roi), nthreads, c))
-        return false;
-    const ROI dw      = c.clamped.roi();
-    const ROI search  = grow_and_clip(roi, denoise_search_radius, dw);
-    const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
-    if (!load_feature_inputs(op_name, dst, c.clamped, c.guides, temporal_feature_sigmas, search,
-                             patches, nthreads, fin))
-        return false;
-    std::vector<std::unique_ptr<Neighbour>> loaded;
-    if (!load_neighbours(dst, centre, neighbours, offsets, fin, nthreads, loaded))
-        return false;
-    if (!average_frames(dst, centre, c, fin, loaded, roi, nthreads)
-        || !give_back_excess(op_name, dst, c.excess, roi, beauty.roi(),
-                             premultiplied_alpha(beauty, beauty.nchannels()), nthreads))
-        return false;
-    dst.specmod().attribute("mcdenoise:denoise_frames", int(neighbours.size()) + 1);
-    return true;
+    // Each frame prepared once, the centre first (its errors first).
+    const PreparedFrame c = prepare_frame(centre, nthreads);
+    std::vector<PreparedFrame> ns;
+    for (const FrameInput& n : neighbours)
+        ns.push_back(prepare_frame(n, nthreads));
+    return denoise(dst, c, ns, offsets, roi, nthreads);
 }
 
 ImageBuf denoise(const FrameInput& centre, const std::vector<FrameInput>& neighbours,

@@ -51,6 +51,9 @@ bool warped_average(ImageBuf& dst, const FrameInput& centre, const ImageBuf& cen
         || (centre.guides.depth
             && !load_depths(op_name, dst, *centre.guides.depth, dw, nthreads, depth)))
         return false;
+    std::vector<const GuideChannels*> motion_of;
+    for (const auto& m : motions)
+        motion_of.push_back(m.get());
     const int nc = dw.chend;
     std::vector<float> sum(own.data, own.data + dw.npixels() * size_t(nc));
     std::vector<float> count(dw.npixels(), 1.0f);
@@ -62,9 +65,9 @@ bool warped_average(ImageBuf& dst, const FrameInput& centre, const ImageBuf& cen
                 && !load_depths(op_name, dst, *neighbours[i].guides.depth, dw, nthreads,
                                 other_depth)))
             return false;
-        const WarpMap map = motion_warp_map(motion_steps(motions, offsets, offsets[i]),
+        const WarpMap map = motion_warp_map(motion_steps(motion_of, offsets, offsets[i]),
                                             offsets[i], dw, dw, nthreads);
-        const Planes<float> warped = warp_planes(channel_planes(other, nthreads), map, dw, false, nthreads);
+        const Planes<float> warped = warp_planes(channel_planes(other, nthreads), map, dw, nthreads);
         for (int y = dw.ybegin; y < dw.yend; ++y)
             for (int x = dw.xbegin; x < dw.xend; ++x) {
                 const size_t p = map.xs.offset(x, y);

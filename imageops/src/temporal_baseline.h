@@ -15,7 +15,7 @@ constexpr float baseline_depth_tolerance = 0.05f;
 /// The baseline: `centre_result` (the centre frame's own `denoise` result)
 /// averaged, with equal weights, with `results[i]` (neighbour i's own
 /// result) carried into the centre's grid by the motion guides as the
-/// cross-frame denoise carries frames (sampled bilinearly), at the pixels
+/// cross-frame denoise carries a frame's values (`warp_planes`), at the pixels
 /// where the neighbour's depth at the nearest source pixel agrees with the
 /// centre's (both infinitely far, or within
 /// `baseline_depth_tolerance`; no check without a depth guide). Every

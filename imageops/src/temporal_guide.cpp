@@ -5,6 +5,9 @@
 
 #include "window.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace mcdenoise {
 
 using OIIO::ROI;
@@ -25,45 +28,52 @@ TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& reg
     TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, nc), Plane<float>(region) },
                       { Planes<float>(region, dims), IdPlane() } };
-    // Every frame's planes share the centre's regions: one offset each.
-    const auto& colour = centre.colour->colour;
-    const auto& var    = centre.variance->colour;
-    const auto& feat   = centre.features->dims;
-    const size_t nf    = frames.size();
+    // Row by row, each plane: the centre's, plus each neighbour's times its
+    // weight (squared for the variance), over the total weight (squared).
+    const size_t nf = frames.size();
     parallel_rows(region, nthreads, [&](int y) {
-        for (int x = region.xbegin; x < region.xend; ++x) {
-            const size_t i = g.colour.colour.offset(x, y), oc = colour.offset(x, y),
-                         ov = var.offset(x, y), of = feat.offset(x, y);
-            float total = 1.0f;
-            for (size_t k = 1; k < nf; ++k)
-                total += weights[k - 1].values[i];
-            // The weighted mean over the frames of plane p of `planes(f)`
-            // at `o`, each frame's weight to the power `power`.
-            const auto mean = [&](auto&& planes, size_t p, size_t o, int power) {
-                float sum = planes(frames[0]).values[p][o];
-                for (size_t k = 1; k < nf; ++k) {
-                    const float w = weights[k - 1].values[i];
-                    sum += (power == 2 ? w * w : w) * planes(frames[k]).values[p][o];
-                }
-                return power == 2 ? sum / (total * total) : sum / total;
-            };
-            const auto colours  = [](const NlmFrame& f) -> const auto& { return f.colour->colour; };
-            const auto variances = [](const NlmFrame& f) -> const auto& { return f.variance->colour; };
-            const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
-            float lum = 0.0f, lum_var = 0.0f;
-            for (int c = 0; c < nc; ++c) {
-                const float u = mean(colours, size_t(c), oc, 1);
-                const float v = mean(variances, size_t(c), ov, 2);
-                g.colour.colour.values[size_t(c)][i]   = u;
-                g.variance.colour.values[size_t(c)][i] = v;
-                lum += lw[size_t(c)] * u;
-                lum_var += lw[size_t(c)] * lw[size_t(c)] * v;
-            }
-            for (int d = 0; d < dims; ++d)
-                g.features.dims.values[size_t(d)][i] = mean(features, size_t(d), of, 1);
-            g.colour.luminance.values[i]   = lum;
-            g.variance.luminance.values[i] = lum_var;
+        const int x0 = region.xbegin, n = region.width();
+        std::vector<float> total(size_t(n), 1.0f);
+        for (size_t k = 1; k < nf; ++k) {
+            const float* w = weights[k - 1].from(x0, y);
+            for (int i = 0; i < n; ++i)
+                total[size_t(i)] += w[i];
         }
+        // The weighted mean of plane p of `planes(f)` over the frames into
+        // `out`, each frame's weight squared with `squared`.
+        const auto mean = [&](auto&& planes, size_t p, bool squared, float* out) {
+            const float* c = planes(frames[0]).from(int(p), x0, y);
+            std::copy(c, c + n, out);
+            for (size_t k = 1; k < nf; ++k) {
+                const float* w = weights[k - 1].from(x0, y);
+                const float* v = planes(frames[k]).from(int(p), x0, y);
+                for (int i = 0; i < n; ++i)
+                    out[i] += (squared ? w[i] * w[i] : w[i]) * v[i];
+            }
+            for (int i = 0; i < n; ++i)
+                out[i] = squared ? out[i] / (total[size_t(i)] * total[size_t(i)])
+                                 : out[i] / total[size_t(i)];
+        };
+        const auto colours  = [](const NlmFrame& f) -> const auto& { return f.colour->colour; };
+        const auto variances = [](const NlmFrame& f) -> const auto& { return f.variance->colour; };
+        const auto features = [](const NlmFrame& f) -> const auto& { return f.features->dims; };
+        float* lum     = g.colour.luminance.from(x0, y);
+        float* lum_var = g.variance.luminance.from(x0, y);
+        std::fill(lum, lum + n, 0.0f);
+        std::fill(lum_var, lum_var + n, 0.0f);
+        for (int c = 0; c < nc; ++c) {
+            float* u = g.colour.colour.from(c, x0, y);
+            float* v = g.variance.colour.from(c, x0, y);
+            mean(colours, size_t(c), false, u);
+            mean(variances, size_t(c), true, v);
+            const float l = lw[size_t(c)], l2 = l * l;
+            for (int i = 0; i < n; ++i) {
+                lum[i] += l * u[i];
+                lum_var[i] += l2 * v[i];
+            }
+        }
+        for (int d = 0; d < dims; ++d)
+            mean(features, size_t(d), false, g.features.dims.from(d, x0, y));
     });
     return g;
 }

@@ -9,8 +9,9 @@ namespace mcdpy {
 namespace py = pybind11;
 
 /// Adds `denoise(beauty, guides=None, neighbours=None, roi, nthreads)` to
-/// `module`: with `neighbours`, a list of (offset, beauty, guides) tuples,
-/// the cross-frame form.
+/// `module`: with `neighbours`, a list of (offset, beauty, guides) or
+/// (offset, PreparedFrame) tuples, the cross-frame form; and
+/// `prepare_frame(beauty, guides=None, nthreads)`, giving a PreparedFrame.
 void bind_denoise(py::module_& module);
 
 }  // namespace mcdpy

@@ -1,7 +1,8 @@
 """The cross-frame denoise from Python and in mcdenoise.batch, on a small
 testrender camera move: mcdenoise.denoise(beauty, guides, neighbours=[(offset,
 beauty, guides), ...]) gives bit for bit what `mcdtool --temporal` writes (as
-float); an empty list gives the single-frame result; malformed neighbours are
+float), also with neighbours prepared once (prepare_frame); an empty list
+gives the single-frame result; malformed neighbours are
 a TypeError; the batch with --temporal writes the same files as one mcdtool
 run, whatever the chunks (each task reads the frames its chunk needs)."""
 import numpy as np
@@ -43,6 +44,12 @@ def test_binding_equals_mcdtool_temporal(truck, tmp_path):
     assert not np.array_equal(result, single)
     assert np.array_equal(mcdenoise.denoise(oiio.ImageBuf(beauty), guides, neighbours=[]).get_pixels(oiio.FLOAT),
                           single)
+    # frames prepared once (prepare_frame), alone or mixed with plain tuples
+    prepared = [(n[0], mcdenoise.prepare_frame(n[1], n[2], nthreads=1)) for n in neighbours]
+    assert mcdenoise.denoise(beauty, guides, neighbours=prepared).tobytes() == result.tobytes()
+    assert mcdenoise.denoise(beauty, guides, neighbours=prepared[:2] + neighbours[2:]).tobytes() == result.tobytes()
+    with pytest.raises(mcdenoise.Error, match="motion has 3 channels"):
+        mcdenoise.prepare_frame(beauty, {"motion": beauty})
 
 
 def test_malformed_neighbours_are_type_errors(truck):

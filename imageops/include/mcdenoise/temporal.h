@@ -6,6 +6,8 @@
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 MCDENOISE_API_BEGIN
@@ -26,9 +28,11 @@ struct FrameInput {
 /// 1. Every frame goes through `denoise`'s first steps on its own: the
 ///    firefly clamp, and the variance from its guide, halves or estimate.
 /// 2. Each neighbour is carried into the centre's pixel grid through the
-///    motion guides: colour, variance and every channel sampled bilinearly
-///    where the motion leads (the variance as that of the sample), the
-///    features at the nearest pixel. For |offset| > 1 the vectors of the
+///    motion guides: the colour its patches are compared by sampled
+///    bilinearly where the motion leads (its variance as that of the
+///    sample), every channel averaged with Keys' cubic (Catmull-Rom, kept
+///    within the 2x2 pixels around the point: sharper, with no overshoot),
+///    the features at the nearest pixel. For |offset| > 1 the vectors of the
 ///    frames in between are chained; a frame on the way that is left out
 ///    or has no motion guide repeats the previous step's vector. Without a
 ///    motion guide on the centre the neighbours are taken as they are, and
@@ -53,15 +57,53 @@ struct FrameInput {
 ///
 /// Every neighbour must have the centre's data window, channel count and
 /// set of the guides `denoise` reads (normal, depth, albedo, variance,
-/// halves), each covering its data window; a motion guide has 4 channels;
-/// `offsets` must be distinct and non-zero. The order of the neighbours
-/// does not change the result. The `dst` attribute
-/// `mcdenoise:denoise_frames` is the count of frames used.
+/// halves); every frame's guides must cover its data window (each frame is
+/// prepared whole, as `prepare_frame` does, whatever the ROI); a motion
+/// guide has 4 channels; `offsets` must be distinct and non-zero. The
+/// order of the neighbours does not change the result. The `dst`
+/// attribute `mcdenoise:denoise_frames` is the count of frames used.
 ImageBuf denoise(const FrameInput& centre, const std::vector<FrameInput>& neighbours,
                  const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool denoise(ImageBuf& dst, const FrameInput& centre, const std::vector<FrameInput>& neighbours,
              const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
+
+/// What `prepare_frame` keeps of a frame (the library's own type).
+struct PreparedFrameData;
+
+/// One frame of a shot ready for the cross-frame `denoise`: step 1 below
+/// (`denoise`'s firefly clamp and variance) done over its whole data
+/// window, and the planes the average reads (colour, variance, features,
+/// every channel, the motion) converted once. A sequence prepares each
+/// frame once and passes it to every window it is in, as the centre and
+/// as a neighbour, instead of preparing it again for each. Copies share
+/// the prepared planes, which never change. The frame's beauty and guide
+/// images must stay alive and unchanged while it is used.
+struct PreparedFrame {
+    /// The prepared planes (the library's own type); null unless prepared
+    /// successfully.
+    std::shared_ptr<const PreparedFrameData> data;
+    /// Why preparing failed; empty if it succeeded or was not attempted.
+    std::string error;
+};
+
+/// Prepare `frame` for the cross-frame `denoise` (`PreparedFrame`), over
+/// its data window, with the checks `denoise` makes of one frame (a
+/// beauty; its guides readable and covering its data window; a motion
+/// guide of 4 channels). On failure the result has no `data` and an
+/// `error`. The prepared planes are bit-identical for any `nthreads`.
+PreparedFrame prepare_frame(const FrameInput& frame, int nthreads = 0);
+
+/// The cross-frame `denoise` of already prepared frames: the same result,
+/// bit for bit, as the form above given the frames they were prepared
+/// from, with the same checks (an unprepared frame or one that failed to
+/// prepare is an error naming it).
+bool denoise(ImageBuf& dst, const PreparedFrame& centre,
+             const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
+             ROI roi = {}, int nthreads = 0);
+/// The value form of the prepared-frame `denoise`.
+ImageBuf denoise(const PreparedFrame& centre, const std::vector<PreparedFrame>& neighbours,
+                 const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 
 /// Search radius in each neighbour frame carried by the motion guide.
 constexpr int temporal_search_radius = 2;
