@@ -14,9 +14,6 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <string>
 
 namespace mcdenoise {
@@ -47,44 +44,14 @@ bool check_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers, con
     return true;
 }
 
-/// The luminance of `block` times the split's scale, over `colour_region`,
-/// and its variance estimated over `variance_region`, as `nlmeans` reads
-/// the beauty's.
-LayerPatches layer_patches(ImageBuf& dst, const PixelBlock& block, const SplitScales& scales,
-                           const ROI& colour_region, const ROI& variance_region,
-                           const ROI& data_window, int nthreads)
-{
-    const int nc  = colour_channels(block.nchannels);
-    const auto lw = luminance_weights(nc);
-    LayerPatches out { ColourField { Planes<float>(colour_region, 1), Plane<float>(colour_region) },
-                       {} };
-    parallel_rows(colour_region, nthreads, [&](int y) {
-        for (int x = colour_region.xbegin; x < colour_region.xend; ++x) {
-            const float* v = block.pixel(x, y);
-            float lum      = 0.0f;
-            for (int c = 0; c < nc; ++c)
-                lum += lw[size_t(c)] * (std::isfinite(v[c]) ? v[c] : 0.0f);
-            lum *= scales.scale.at(x, y);
-            *out.colour.colour.from(0, x, y) = lum;
-            out.colour.luminance.at(x, y) = lum;
-        }
-    });
-    load_variance(op_name, dst, nullptr, out.colour, variance_region, data_window, nthreads,
-                  out.variance);
-    return out;
-}
-
 /// What `denoise` does to the beauty, done to each layer: the outlier
 /// split of `scales` (over `region`), into `values[i]` over the search
 /// region of the beauty's `roi` and `excess[i]` over `region`.
 bool split_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers,
                   const SplitScales& scales, const ROI& region, const ROI& roi, int nthreads,
-                  std::vector<SumSource>& values, std::vector<Planes<float>>& excess,
-                  std::vector<LayerPatches>* patches, const ROI& data_window)
+                  std::vector<SumSource>& values, std::vector<Planes<float>>& excess)
 {
     const ROI search = grow_and_clip(roi, denoise_search_radius, region);
-    const ROI var_region = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, data_window);
-    const ROI col_region = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius + 1, data_window);
     values.resize(layers.size());
     excess.resize(layers.size());
     for (size_t i = 0; i < layers.size(); ++i) {
@@ -97,9 +64,6 @@ bool split_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers,
             return false;
         }
         split_layer(block, scales, search, nthreads, values[i], excess[i]);
-        if (patches)
-            patches->push_back(layer_patches(dst, block, scales, col_region, var_region,
-                                             data_window, nthreads));
     }
     return true;
 }
@@ -136,20 +100,15 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     SplitScales scales;
     std::vector<SumSource> values;
     std::vector<Planes<float>> excess;
-    std::vector<LayerPatches> patches;
-    const char* env = std::getenv("MCD_LAYER_DISTANCE");
-    const bool use = env && *env;
-    const LayerDistance mode = use && !std::strcmp(env, "max") ? LayerDistance::max : LayerDistance::add;
     if (!prepare_denoise_frame(dst, beauty, nch, guides, region, nthreads, frame, &scales)
-        || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess,
-                         use ? &patches : nullptr, beauty.roi()))
+        || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess))
         return false;
     // Into new images, so the excess can be added to float pixels in place.
     ImageBuf out;
     std::vector<ImageBuf> outs;
     if (!nlmeans_layers(out, outs, frame.clamped, layers, std::move(values), frame.guides,
                         denoise_search_radius, denoise_patch_radius, frame.strength,
-                        denoise_feature_sigmas, roi, nthreads, patches, mode)) {
+                        denoise_feature_sigmas, roi, nthreads)) {
         dst.errorfmt("{}", out.geterror());
         return false;
     }

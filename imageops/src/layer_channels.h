@@ -39,25 +39,11 @@ struct NlmTarget {
     int value_begin;
 };
 
-/// A layer's luminance (one channel) and its estimated variance, over the
-/// regions the beauty's colour and variance cover, for the patch distance.
-struct LayerPatches {
-    ColourField colour;
-    VarianceField variance;
-};
-
-/// How the layers' patch distances enter the beauty's (experiment).
-enum class LayerDistance { add, max };
-
 /// `nlmeans_frames` into several targets over the same pixels (the first
-/// target's ROI), every one averaged with the same weights; the
-/// variance-normalised distance of each of `layer_patches` combined per
-/// pixel with the beauty's as `mode` says.
+/// target's ROI), every one averaged with the same weights.
 void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, const OIIO::ROI& dw, int patch_radius,
-                    float strength, int nthreads, const std::vector<NlmTarget>& targets,
-                    const std::vector<LayerPatches>& layer_patches = {},
-                    LayerDistance mode = LayerDistance::add);
+                    float strength, int nthreads, const std::vector<NlmTarget>& targets);
 
 /// `nlmeans` of `beauty` into `dst`, averaging with the same weights the
 /// values of each layer, `values[i]` (every channel of `*layers[i]`, over
@@ -69,7 +55,6 @@ bool nlmeans_layers(OIIO::ImageBuf& dst, std::vector<OIIO::ImageBuf>& dst_layers
                     const OIIO::ImageBuf& beauty, const std::vector<const OIIO::ImageBuf*>& layers,
                     std::vector<SumSource>&& values, const Guides& guides, int search_radius,
                     int patch_radius, float strength, const FeatureSigmas& sigmas, OIIO::ROI roi,
-                    int nthreads, const std::vector<LayerPatches>& layer_patches = {},
-                    LayerDistance mode = LayerDistance::add);
+                    int nthreads);
 
 }  // namespace mcdenoise

@@ -16,8 +16,6 @@
 #include <OpenImageIO/imagebufalgo_util.h>
 #include <OpenImageIO/simd.h>
 
-#include <cstdlib>
-
 namespace mcdenoise {
 
 using OIIO::ImageBuf;
@@ -39,8 +37,6 @@ struct NlmInputs {
     ROI dw;
     int f;
     float k2;  // strength^2
-    const std::vector<LayerPatches>& layers;
-    LayerDistance mode;
 };
 
 // One row of colour and variance planes at p and at q = p + o, per channel.
@@ -96,8 +92,7 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
     const int nc = in.colour.nchannels();
     const float channel_mean = 1.0f / float(nc);
     std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
-        e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n)),
-        extra(static_cast<size_t>(pw));
+        e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n));
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
             for (int i = 0; i < n; ++i)
@@ -124,17 +119,6 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
                     distance_row<2>(rows, in.k2, channel_mean, m, d);
                 else
                     distance_row<1>(rows, in.k2, channel_mean, m, d);
-                for (const LayerPatches& lp : in.layers) {
-                    DistanceRows lr;
-                    lr.u_p[0] = lp.colour.colour.from(0, xa, yy);
-                    lr.u_q[0] = lp.colour.colour.from(0, xa + dx, yy + dy);
-                    lr.v_p[0] = lp.variance.colour.from(0, xa, yy);
-                    lr.v_q[0] = lp.variance.colour.from(0, xa + dx, yy + dy);
-                    distance_row<1>(lr, in.k2, std::getenv("MCD_LAYER_MEAN") ? 1.0f / float(in.layers.size()) : 1.0f, m, extra.data());
-                    for (int i = 0; i < m; ++i)
-                        d[i] = in.mode == LayerDistance::add ? d[i] + extra[size_t(i)]
-                                                             : std::max(d[i], extra[size_t(i)]);
-                }
             }
             for (int y = y0; y < y1; ++y) {
                 const Offset o = clip_offset(dx, dy, 1, x0, n, dw);
@@ -327,8 +311,7 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
 bool nlmeans_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
                     const std::vector<const ImageBuf*>& layers, std::vector<SumSource>&& values,
                     const Guides& guides, int search_radius, int patch_radius, float strength,
-                    const FeatureSigmas& sigmas, ROI roi, int nthreads,
-                    const std::vector<LayerPatches>& layer_patches, LayerDistance mode)
+                    const FeatureSigmas& sigmas, ROI roi, int nthreads)
 {
     const char* op = "nlmeans";
     FeatureInputs fin;
@@ -357,7 +340,7 @@ bool nlmeans_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
         append_values(fin.values, std::move(values[i]));
     }
     nlmeans_frames(own_frame(fin, search_radius), fin.colour, fin.variance, beauty.roi(),
-                   patch_radius, strength, nthreads, targets, layer_patches, mode);
+                   patch_radius, strength, nthreads, targets);
     for (size_t i = 0; i < layers.size(); ++i)
         if (!finish_result(op, dst_layers[i], results[i + 1])) {
             dst.errorfmt("{}", dst_layers[i].geterror());
@@ -376,12 +359,10 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
 
 void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, const ROI& dw, int patch_radius,
-                    float strength, int nthreads, const std::vector<NlmTarget>& targets,
-                    const std::vector<LayerPatches>& layer_patches, LayerDistance mode)
+                    float strength, int nthreads, const std::vector<NlmTarget>& targets)
 {
     const ROI& roi = targets.front().result->roi;
-    const NlmInputs in { frames,       colour,        variance, dw, patch_radius,
-                         strength * strength, layer_patches, mode };
+    const NlmInputs in { frames, colour, variance, dw, patch_radius, strength * strength };
     OIIO::ImageBufAlgo::parallel_image(roi, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
@@ -399,9 +380,8 @@ void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceF
     NlmFrame at_pixel      = q;
     at_pixel.search_radius = 0;
     const std::vector<NlmFrame> frames { at_pixel };
-    static const std::vector<LayerPatches> no_layers;
-    const NlmInputs in { frames,   colour, variance, dw, patch_radius, strength * strength,
-                         no_layers, LayerDistance::add };
+    const NlmInputs in { frames, colour, variance, dw, patch_radius,
+                         strength * strength };
     std::fill(w.values.begin(), w.values.end(), 0.0f);
     OIIO::ImageBufAlgo::parallel_image(region, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
