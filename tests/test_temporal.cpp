@@ -82,6 +82,27 @@ float at(const ImageBuf& img, int x, int y, int c)
     return v[c];
 }
 
+// `count` frames of random RGBA noise with wavy normals and random motion
+// of up to 2 pixels, each frame from its own seeds (`seed` + frame).
+struct RandomShot {
+    std::vector<ImageBuf> beauty, normal, motion;
+    RandomShot(int count, int seed)
+    {
+        for (int f = 0; f < count; ++f) {
+            beauty.push_back(testimg::random_image(width, height, 4, seed + f));
+            normal.push_back(testimg::wavy_normals(width, height, seed + 10 + f));
+            motion.push_back(testimg::random_image(width, height, 4, seed + 20 + f, -2.0f, 2.0f));
+        }
+    }
+    mcd::FrameInput input(int f) const
+    {
+        mcd::FrameInput frame { &beauty[f], {} };
+        frame.guides.normal = &normal[f];
+        frame.guides.motion = &motion[f];
+        return frame;
+    }
+};
+
 }  // namespace
 
 TEST(Temporal, NoNeighboursIsDenoise)
@@ -205,18 +226,8 @@ TEST(Temporal, AnotherSurfaceGetsNoWeight)
 
 TEST(Temporal, SameForAnyThreadsSplitAndOrder)
 {
-    std::vector<ImageBuf> beauty, normal, motion;
-    for (int f = 0; f < 3; ++f) {
-        beauty.push_back(testimg::random_image(width, height, 4, 10 + f));
-        normal.push_back(testimg::wavy_normals(width, height, 20 + f));
-        motion.push_back(testimg::random_image(width, height, 4, 30 + f, -2.0f, 2.0f));
-    }
-    std::vector<mcd::FrameInput> frames;
-    for (int f = 0; f < 3; ++f) {
-        frames.push_back({ &beauty[f], {} });
-        frames.back().guides.normal = &normal[f];
-        frames.back().guides.motion = &motion[f];
-    }
+    const RandomShot shot(3, 10);
+    const std::vector<mcd::FrameInput> frames { shot.input(0), shot.input(1), shot.input(2) };
     const ImageBuf one = mcd::denoise(frames[1], { frames[0], frames[2] }, { -1, 1 }, {}, 1);
     ASSERT_FALSE(one.has_error()) << one.geterror();
     EXPECT_TRUE(testimg::bit_identical(
@@ -236,20 +247,13 @@ TEST(Temporal, PreparedFramesGiveTheSameResult)
     // A shot of four frames, each prepared once and used in every window
     // it is in, as the centre and as a neighbour; a NaN in one frame
     // (a finite mask on its values only).
-    std::vector<ImageBuf> beauty, normal, motion;
-    for (int f = 0; f < 4; ++f) {
-        beauty.push_back(testimg::random_image(width, height, 4, 70 + f));
-        normal.push_back(testimg::wavy_normals(width, height, 80 + f));
-        motion.push_back(testimg::random_image(width, height, 4, 90 + f, -2.0f, 2.0f));
-    }
+    RandomShot shot(4, 70);
     const float nan[4] = { std::nanf(""), 0.5f, 0.5f, 1.0f };
-    beauty[2].setpixel(5, 6, nan);
+    shot.beauty[2].setpixel(5, 6, nan);
     std::vector<mcd::FrameInput> frames;
     std::vector<mcd::PreparedFrame> prepared;
     for (int f = 0; f < 4; ++f) {
-        frames.push_back({ &beauty[f], {} });
-        frames.back().guides.normal = &normal[f];
-        frames.back().guides.motion = &motion[f];
+        frames.push_back(shot.input(f));
         prepared.push_back(mcd::prepare_frame(frames.back(), 1 + f % 2));
         ASSERT_TRUE(prepared.back().data) << prepared.back().error;
     }
