@@ -118,7 +118,7 @@ SplitResult split(const ImageBuf& beauty, const ImageBuf* variance)
 {
     SplitResult r;
     ImageBuf dst;
-    EXPECT_TRUE(mcdenoise::split_outliers("test", dst, beauty, beauty.nchannels(), variance,
+    EXPECT_TRUE(mcdenoise::split_outliers("test", dst, beauty, variance,
                                           2.0f, 2, beauty.roi(), 1, r.kept, r.excess))
         << dst.geterror();
     return r;

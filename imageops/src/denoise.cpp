@@ -6,7 +6,6 @@
 #include "denoise_frame.h"
 #include "energy_outliers.h"
 #include "feature_field.h"
-#include "layer_channels.h"
 #include "operation.h"
 #include "window.h"
 
@@ -129,8 +128,8 @@ ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
     return region;
 }
 
-bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
-                           const Guides& guides, const ROI& region, int nthreads,
+bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+                           const ROI& region, int nthreads,
                            DenoiseFrame& frame, SplitScales* scales)
 {
     frame.guides           = guides;  // the object id is not read (see denoise.h)
@@ -147,7 +146,7 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begi
         frame.guides.variance = &frame.variance;
         test_variance         = &pixel_variance;
     }
-    if (!split_outliers(op_name, dst, beauty, layer_begin, test_variance, firefly_factor,
+    if (!split_outliers(op_name, dst, beauty, test_variance, firefly_factor,
                         firefly_radius, region, nthreads, frame.clamped, frame.excess,
                         scales))
         return false;
@@ -163,24 +162,18 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, int layer_begi
 
 bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
 {
-    return denoise_stacked(dst, beauty, beauty.nchannels(), guides, roi, nthreads);
-}
-
-bool denoise_stacked(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
-                     const Guides& guides, ROI roi, int nthreads)
-{
     if (!resolve_roi(op_name, dst, beauty, roi)
         || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
     DenoiseFrame frame;
-    if (!prepare_denoise_frame(dst, beauty, layer_begin, guides, denoise_region(beauty, roi),
+    if (!prepare_denoise_frame(dst, beauty, guides, denoise_region(beauty, roi),
                                nthreads, frame)
         || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
                     denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
                     nthreads))
         return false;
     if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
-                          premultiplied_alpha(beauty, layer_begin), nthreads))
+                          premultiplied_alpha(beauty), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
     return true;

@@ -29,14 +29,12 @@ struct DenoiseFrame {
 };
 
 /// `denoise`'s steps before the average on `beauty` over `region` (all its
-/// channels): clamp the fireflies (the scale decided on the colour applied
-/// to the colour and to the stacked layers from channel `layer_begin` on,
-/// layer_channels.h), then take the variance from the guide, the halves or
-/// an estimate. Object ids are dropped from the guides. The guides must
+/// channels): split the fireflies off (`split_outliers`), then take the
+/// variance from the guide, the halves or an estimate. Object ids are dropped from the guides. The guides must
 /// have been checked; on failure sets `dst`'s error. With `scales`, what
 /// the clamp did to each pixel goes there too (`split_outliers`).
-bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, int layer_begin,
-                           const Guides& guides, const OIIO::ROI& region, int nthreads,
+bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, const Guides& guides,
+                           const OIIO::ROI& region, int nthreads,
                            DenoiseFrame& frame, SplitScales* scales = nullptr);
 
 /// The names of the guides `denoise` reads, comma separated (its `dst`

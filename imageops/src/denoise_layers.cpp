@@ -94,13 +94,12 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_layers(dst, layers, roi)
         || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
-    const int nch    = beauty.nchannels();
     const ROI region = denoise_region(beauty, roi);
     DenoiseFrame frame;
     SplitScales scales;
     std::vector<SumSource> values;
     std::vector<Planes<float>> excess;
-    if (!prepare_denoise_frame(dst, beauty, nch, guides, region, nthreads, frame, &scales)
+    if (!prepare_denoise_frame(dst, beauty, guides, region, nthreads, frame, &scales)
         || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess))
         return false;
     // Into new images, so the excess can be added to float pixels in place.
@@ -114,7 +113,7 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     }
     Plane<float> factors;
     if (!give_back_excess(op_name, out, frame.excess, roi, beauty.roi(),
-                          premultiplied_alpha(beauty, nch), nthreads, &factors)) {
+                          premultiplied_alpha(beauty), nthreads, &factors)) {
         dst.errorfmt("{}", out.geterror());
         return false;
     }

@@ -3,7 +3,6 @@
 #include "energy_outliers.h"
 
 #include "feature_field.h"
-#include "layer_channels.h"
 #include "weighted_sums.h"
 #include "window.h"
 
@@ -84,7 +83,7 @@ std::vector<float> inverse_coverage(const std::vector<float>& g, int a, int b, i
 
 }  // namespace
 
-bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
+bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty,
                     const ImageBuf* variance, float factor, int radius, const ROI& region,
                     int nthreads, ImageBuf& kept, Planes<float>& excess, SplitScales* scales)
 {
@@ -95,8 +94,8 @@ bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int l
         return false;
     if (scales)
         scales->gives_back = Plane<uint8_t>(region, uint8_t(0));
-    if (!clamp_fireflies_layers(kept, beauty, layer_begin, {}, factor, radius, region,
-                                nthreads, scales ? &scales->scale : nullptr)) {
+    if (!clamp_fireflies_scales(kept, beauty, {}, factor, radius, region, nthreads,
+                                scales ? &scales->scale : nullptr)) {
         dst.errorfmt("{}: {}", op, kept.geterror());
         return false;
     }
@@ -119,9 +118,7 @@ bool split_outliers(const char* op, ImageBuf& dst, const ImageBuf& beauty, int l
                 scales->scale.at(x, y)      = highlight ? 1.0f : scales->scale.at(x, y);
                 scales->gives_back.at(x, y) = !highlight;
             }
-            for (int c = 0; c < nch; ++c) {
-                if (c >= nc && c < layer_begin)
-                    continue;
+            for (int c = 0; c < nc; ++c) {
                 if (highlight)
                     out[c] = in[c];
                 else if (std::isfinite(in[c]))
@@ -280,12 +277,12 @@ ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& d
     return spread;
 }
 
-int premultiplied_alpha(const ImageBuf& beauty, int layer_begin)
+int premultiplied_alpha(const ImageBuf& beauty)
 {
     const int given = beauty.spec().alpha_channel;
     if (given >= 0)
         return given;
-    return layer_begin > feature_colour_channels ? feature_colour_channels : -1;
+    return beauty.nchannels() > feature_colour_channels ? feature_colour_channels : -1;
 }
 
 namespace {

@@ -5,6 +5,8 @@
 // blotch.
 #pragma once
 
+#include <mcdenoise/features.h>
+
 #include "pixel_block.h"
 #include "plane.h"
 #include "weighted_sums.h"
@@ -31,20 +33,24 @@ struct SplitScales {
     Plane<uint8_t> gives_back;
 };
 
+/// `clamp_fireflies` (fireflies.h), and when `scales` is given the factor
+/// it multiplied each pixel's colour by, over the ROI, into `scales`.
+bool clamp_fireflies_scales(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
+                            const Guides& guides, float factor, int radius, OIIO::ROI roi,
+                            int nthreads, Plane<float>* scales);
+
 /// Split `beauty` over `region` (inside its data window, all channels) into
-/// `kept`, `clamp_fireflies(beauty, factor, radius)` with its per-pixel
-/// scale, decided on the colour, applied to the colour and to the stacked
-/// layers from channel `layer_begin` on (layer_channels.h), except where the
+/// `kept`, `clamp_fireflies(beauty, factor, radius)`, except where the
 /// luminance excess over the bound exceeds `consistent_excess_sigmas`
 /// standard deviations of the pixel's measured noise (`variance`, a
 /// variance guide as features.h reads it; without it every clamped pixel
 /// counts as a firefly), and `excess = beauty - kept`, one plane per
-/// channel of `beauty` over `region` (0 for the channels between the colour
-/// and `layer_begin`, such as alpha, and where a value is not finite). With
-/// `scales`, what was done to each pixel of `region` goes there too. On
-/// failure sets `dst`'s error prefixed with `op`.
+/// channel of `beauty` over `region` (0 for the channels beyond the colour,
+/// such as alpha, and where a value is not finite). With `scales`, what was
+/// done to each pixel of `region` goes there too, to split further layers
+/// alike (`split_layer`). On failure sets `dst`'s error prefixed with `op`.
 bool split_outliers(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty,
-                    int layer_begin, const OIIO::ImageBuf* variance, float factor, int radius,
+                    const OIIO::ImageBuf* variance, float factor, int radius,
                     const OIIO::ROI& region, int nthreads, OIIO::ImageBuf& kept,
                     Planes<float>& excess, SplitScales* scales = nullptr);
 
@@ -66,9 +72,9 @@ OIIO::ImageBuf spread_excess(const Planes<float>& excess, const OIIO::ROI& roi,
                              const OIIO::ROI& data_window, int nchannels, int nthreads);
 
 /// The alpha channel `give_back_excess` keeps the colour of `beauty` under:
-/// its `spec().alpha_channel` when set, else channel 3 when the beauty's
-/// own channels (those before `layer_begin`) go beyond the colour, else -1.
-int premultiplied_alpha(const OIIO::ImageBuf& beauty, int layer_begin);
+/// its `spec().alpha_channel` when set, else channel 3 when the beauty has
+/// channels beyond the colour, else -1.
+int premultiplied_alpha(const OIIO::ImageBuf& beauty);
 
 /// Add the excess spread (`spread_excess`) to `dst` over `roi`, one factor
 /// per pixel for every channel, so what is linear across channels stays so.

@@ -3,7 +3,7 @@
 #include <mcdenoise/fireflies.h>
 
 #include "feature_field.h"
-#include "layer_channels.h"
+#include "energy_outliers.h"
 #include "offset_walk.h"
 #include "operation.h"
 #include "window.h"
@@ -100,13 +100,12 @@ void find_suspects(const ColourField& colour, const IdPlane* ids, float factor, 
 bool clamp_fireflies(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, float factor,
                      int radius, ROI roi, int nthreads)
 {
-    return clamp_fireflies_layers(dst, beauty, beauty.nchannels(), guides, factor, radius, roi,
-                                  nthreads);
+    return clamp_fireflies_scales(dst, beauty, guides, factor, radius, roi, nthreads, nullptr);
 }
 
-bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_begin,
-                            const Guides& guides, float factor, int radius, ROI roi,
-                            int nthreads, Plane<float>* scales)
+bool clamp_fireflies_scales(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
+                            float factor, int radius, ROI roi, int nthreads,
+                            Plane<float>* scales)
 {
     if (!(factor >= 1.0f) || !std::isfinite(factor)) {
         dst.errorfmt("{}: factor must be a finite number >= 1, got {}", op_name, factor);
@@ -153,7 +152,7 @@ bool clamp_fireflies_layers(ImageBuf& dst, const ImageBuf& beauty, int layer_beg
             const float* in   = block.pixel(x, y);
             for (int ch = roi.chbegin; ch < roi.chend; ++ch) {
                 const float v = in[ch];
-                const bool scaled = (ch < ncolour || ch >= layer_begin) && std::isfinite(v);
+                const bool scaled = ch < ncolour && std::isfinite(v);
                 out[ch - roi.chbegin] = scaled ? v * scale : v;
             }
         }

@@ -1,7 +1,6 @@
-// layer_channels.h: the forms of clamp_fireflies, denoise and nlmeans that
-// take extra light layers (AOVs) along: as further channels of a stacked
-// image, which the outlier scale multiplies like the colour, or as value
-// planes the NL-means weights of the beauty average too.
+// layer_channels.h: the form of nlmeans that takes extra light layers
+// (AOVs) along, as value planes the NL-means weights of the beauty average
+// too (denoise_layers.cpp).
 #pragma once
 
 #include <mcdenoise/features.h>
@@ -15,21 +14,6 @@
 #include <vector>
 
 namespace mcdenoise {
-
-/// `clamp_fireflies`, where channels from `layer_begin` on are scaled by
-/// each pixel's factor like the colour channels; channels between the
-/// colour and `layer_begin` (alpha) are copied. The factor is decided on
-/// the colour alone. When `scales` is given it receives that factor of
-/// every pixel of the ROI.
-bool clamp_fireflies_layers(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, int layer_begin,
-                            const Guides& guides, float factor, int radius, OIIO::ROI roi,
-                            int nthreads, Plane<float>* scales = nullptr);
-
-/// `denoise` of a stacked image: every weight and outlier scale is decided
-/// on the colour and the guides and applied alike to every channel, the
-/// outlier scale to the colour and the channels from `layer_begin` on.
-bool denoise_stacked(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, int layer_begin,
-                     const Guides& guides, OIIO::ROI roi, int nthreads);
 
 /// Where the NL-means average of some value channels goes: the channels
 /// [value_begin, value_begin + result->roi.nchannels()) of the values, into

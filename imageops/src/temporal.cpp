@@ -235,7 +235,7 @@ bool denoise(ImageBuf& dst, const PreparedFrame& centre,
         return false;
     if (!average_frames(dst, *c, ns, offsets, roi, nthreads)
         || !give_back_excess(op_name, dst, c->frame.excess, roi, beauty.roi(),
-                             premultiplied_alpha(beauty, beauty.nchannels()), nthreads))
+                             premultiplied_alpha(beauty), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(ns.size()) + 1);
     return true;

@@ -23,7 +23,7 @@ bool prepare(ImageBuf& dst, const FrameInput& f, int nthreads, PreparedFrameData
     dw.chbegin = 0;
     dw.chend   = f.beauty->nchannels();
     out.input  = f;
-    if (!prepare_denoise_frame(dst, *f.beauty, dw.chend, f.guides, dw, nthreads, out.frame)
+    if (!prepare_denoise_frame(dst, *f.beauty, f.guides, dw, nthreads, out.frame)
         || !load_feature_inputs(temporal_op, dst, out.frame.clamped, out.frame.guides,
                                 temporal_feature_sigmas, dw, dw, nthreads, out.planes)
         || (f.guides.motion
