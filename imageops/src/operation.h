@@ -3,6 +3,8 @@
 // `dst` once everything has succeeded.
 #pragma once
 
+#include "plane.h"
+
 #include <OpenImageIO/imagebuf.h>
 
 #include <atomic>
@@ -21,8 +23,7 @@ public:
     /// follow contiguously.
     float* pixel(int x, int y) const
     {
-        return m_base + (y - roi.ybegin) * m_row_stride
-               + std::ptrdiff_t(x - roi.xbegin) * m_pixel_stride;
+        return m_base + interleaved_offset(roi, x, y, m_row_stride, m_pixel_stride);
     }
 
     /// Put the pixels of `roi` in a buffer owned by this object.
