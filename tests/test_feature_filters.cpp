@@ -291,7 +291,8 @@ TEST(Nlmeans, MatchesReferenceForRadii)
     for (int r : { 0, 1, 3, 5 })
         for (int f : { 0, 1, 2 }) {
             const std::string tag = std::to_string(r) + "/" + std::to_string(f);
-            check_nlmeans(s, {}, r, f, 0.45f, {}, "all guides " + tag);
+            check_nlmeans(s, {}, r, f, mcdenoise::default_nlmeans_strength, {},
+                          "all guides " + tag);
             check_nlmeans(s, { false, false, false, false, false }, r, f, 1.0f, {},
                           "estimated variance, no features " + tag);
         }
@@ -300,11 +301,11 @@ TEST(Nlmeans, MatchesReferenceForRadii)
 TEST(Nlmeans, OneChannelGuidesNonFiniteAndSubRoi)
 {
     const Scene s(23, 17, 4, 61, 2, 3, TypeDesc::UINT32, 1, 1, 0.07);
-    check_nlmeans(s, {}, 3, 1, 0.45f, {}, "non-finite");
+    check_nlmeans(s, {}, 3, 1, mcdenoise::default_nlmeans_strength, {}, "non-finite");
     check_nlmeans(s, { true, true, false, true, false }, 4, 2, 0.8f,
                   ROI(5, 19, 6, 17, 0, 1, 1, 3), "sub-ROI");
     const Scene grey(13, 11, 1, 62, 0, 0, TypeDesc::FLOAT, 1, 3, 0.05);
-    check_nlmeans(grey, {}, 3, 1, 0.45f, {}, "one channel");
+    check_nlmeans(grey, {}, 3, 1, mcdenoise::default_nlmeans_strength, {}, "one channel");
 }
 
 TEST(Nlmeans, HandComputedTwoPixels)
@@ -384,7 +385,8 @@ std::vector<Named> all_filters()
           } },
         { "nlmeans",
           [](ImageBuf& d, const ImageBuf& b, const mcdenoise::Guides& g, ROI r, int n) {
-              return mcdenoise::nlmeans(d, b, g, 4, 1, 0.45f, {}, r, n);
+              return mcdenoise::nlmeans(d, b, g, 4, 1, mcdenoise::default_nlmeans_strength, {},
+                                        r, n);
           } },
         { "demodulate",
           [](ImageBuf& d, const ImageBuf& b, const mcdenoise::Guides& g, ROI r, int n) {
@@ -470,7 +472,8 @@ TEST(FeatureFilters, ErrorsLeaveDstUntouched)
     expect_error([&](ImageBuf& d) { return remodulate(d, b, s.albedo, -1.0f); }, "epsilon");
     expect_error([&](ImageBuf& d) { return demodulate(d, b, two); }, "albedo has 2 channels");
     expect_error([&](ImageBuf& d) { return demodulate(d, b, small.albedo); }, "albedo data window");
-    expect_error([&](ImageBuf& d) { return nlmeans(d, b, g, 3, 1, 0.45f, {}, ROI(0, 30, 0, 5)); },
+    const float strength = default_nlmeans_strength;
+    expect_error([&](ImageBuf& d) { return nlmeans(d, b, g, 3, 1, strength, {}, ROI(0, 30, 0, 5)); },
                  "ROI");
     // Each guide: a wrong channel count, then not covering the ROI.
     const ImageBuf* Guides::*members[] = { &Guides::object_id, &Guides::normal, &Guides::depth,
