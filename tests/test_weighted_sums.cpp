@@ -1,16 +1,19 @@
 // test_weighted_sums.cpp: WeightedSums::add_rows, the weighted sums of many
 // weight rows in one pass, against the same rows added one at a time and
-// against sums in double precision.
+// against sums in double precision; and the masked values both masked
+// layouts hold (interleaved and planar), against the rule written out.
 #include "weighted_sums.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
 namespace {
 
+using mcdenoise::PixelBlock;
 using mcdenoise::SumSource;
 using mcdenoise::WeightedSums;
 using mcdenoise::WeightRow;
@@ -79,4 +82,51 @@ TEST(WeightedSums, AddRowsIsAddRowByRowAndTheWeightedMean)
                     EXPECT_NEAR(got, num / den, 1e-5 * (1.0 + std::abs(num / den)));
                 }
         }
+}
+
+TEST(WeightedSums, BothMaskedLayoutsHoldTheOneMaskedValueRule)
+{
+    // Each input with the value and the weight a masked sum takes from it:
+    // non-finite values as 0 with weight 0, magnitudes beyond 2^100 clamped.
+    struct Case {
+        float in, value, weight;
+    };
+    const float inf = std::numeric_limits<float>::infinity();
+    const Case cases[] = {
+        { 1.5f, 1.5f, 1.0f },          { -0.25f, -0.25f, 1.0f },
+        { 0.0f, 0.0f, 1.0f },          { std::nanf(""), 0.0f, 0.0f },
+        { inf, 0.0f, 0.0f },           { -inf, 0.0f, 0.0f },
+        { 3e30f, 0x1p100f, 1.0f },     { -1e38f, -0x1p100f, 1.0f },
+        { 0x1p100f, 0x1p100f, 1.0f },  { 1e29f, 1e29f, 1.0f },
+        { 7.0f, 7.0f, 1.0f },
+    };
+    const int ncases = int(std::size(cases));
+    const int nc = 3;
+    const OIIO::ROI region(2, 7, 1, 4, 0, 1, 0, nc);
+    PixelBlock block;
+    block.region     = region;
+    block.nchannels  = nc;
+    block.row_stride = std::ptrdiff_t(region.width()) * nc;
+    block.owned.resize(size_t(region.width() * region.height() * nc));
+    block.data = block.owned.data();
+    // Case k at value k (mod the count): every case lands in every channel.
+    for (size_t k = 0; k < block.owned.size(); ++k)
+        block.owned[k] = cases[k % size_t(ncases)].in;
+
+    const PixelBlock interleaved = mcdenoise::with_finite_mask(block, 1);
+    const SumSource planar       = mcdenoise::sum_source(block, 0, nc, region, 1);
+    ASSERT_EQ(interleaved.nchannels, 2 * nc);
+    ASSERT_TRUE(planar.masked());
+    for (int y = region.ybegin; y < region.yend; ++y)
+        for (int x = region.xbegin; x < region.xend; ++x)
+            for (int c = 0; c < nc; ++c) {
+                const size_t k = size_t(block.pixel(x, y) - block.data) + size_t(c);
+                const Case& want = cases[k % size_t(ncases)];
+                const float* mixed = interleaved.pixel(x, y);
+                const float value = *planar.from(c, x, y), weight = *planar.finite_from(c, x, y);
+                EXPECT_EQ(mixed[c], value) << x << "," << y << " channel " << c;
+                EXPECT_EQ(mixed[nc + c], weight) << x << "," << y << " channel " << c;
+                EXPECT_EQ(value, want.value) << "input " << want.in;
+                EXPECT_EQ(weight, want.weight) << "input " << want.in;
+            }
 }

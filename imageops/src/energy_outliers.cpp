@@ -167,7 +167,7 @@ void split_layer(const PixelBlock& in, const SplitScales& scales, const ROI& val
     parallel_rows(values_region, nthreads, [&](int y) {
         for (int x = values_region.xbegin; x < values_region.xend; ++x)
             for (int c = 0; c < nc; ++c)
-                kept.finite[size_t(c)][kept.offset(x, y)] = std::isfinite(in.pixel(x, y)[c]);
+                kept.finite[size_t(c)][kept.offset(x, y)] = finite_weight(in.pixel(x, y)[c]);
     });
 }
 

@@ -114,11 +114,8 @@ PixelBlock with_finite_mask(const PixelBlock& src, int nthreads)
     parallel_rows(src.region, nthreads, [&](int y) {
         const float* in = src.row(y);
         float* dst      = out.owned_row(y);
-        for (int x = 0; x < src.width(); ++x, in += nc, dst += 2 * nc)
-            for (int c = 0; c < nc; ++c) {
-                dst[c]      = summable(in[c]);
-                dst[nc + c] = std::isfinite(in[c]) ? 1.0f : 0.0f;
-            }
+        for (int c = 0; c < nc; ++c)
+            masked_values(in + c, nc, src.width(), dst + c, dst + nc + c, 2 * nc);
     });
     return out;
 }

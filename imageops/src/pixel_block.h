@@ -69,10 +69,39 @@ inline float summable(float v)
     return std::isfinite(v) ? std::clamp(v, -max_summed_magnitude, max_summed_magnitude) : 0.0f;
 }
 
+/// The weight a masked sum gives `v`: 1 when it is finite, 0 when it is NaN
+/// or infinite.
+inline float finite_weight(float v)
+{
+    return std::isfinite(v) ? 1.0f : 0.0f;
+}
+
+/// The one masked-value rule, the producer of both masked layouts (the
+/// interleaved `with_finite_mask`, the planar `sum_source`): for the `n`
+/// values `in[i * in_step]`, the value a masked sum takes (`summable`) into
+/// `values[i * out_step]` and its weight (`finite_weight`) into
+/// `weights[i * out_step]` (when `weights` is null, the weights are only
+/// looked at). Returns true if some weight is 0.
+inline bool masked_values(const float* in, std::ptrdiff_t in_step, int n, float* values,
+                          float* weights, std::ptrdiff_t out_step)
+{
+    float least = 1.0f;
+    for (int i = 0; i < n; ++i) {
+        const float v = in[i * in_step], w = finite_weight(v);
+        values[i * out_step] = summable(v);
+        if (weights)
+            weights[i * out_step] = w;
+        least = std::min(least, w);
+    }
+    return least == 0.0f;
+}
+
 /// A channel's weighted mean over the finite values of its window: `num /
 /// den`, the weighted sum of those values over the weights that contributed,
 /// or 0 when none did (an empty window, counted in `empty`). The one rule
-/// every masked mean ends with.
+/// every masked mean ends with (the separable mean's rows, RowMeans, divide
+/// by multiplying with the weights' reciprocal: the same rule, their own
+/// rounding).
 template<class Sum, class Count>
 inline float masked_mean(Sum num, Sum den, Count& empty)
 {
@@ -88,9 +117,9 @@ bool has_nonfinite(const PixelBlock& block, int nthreads);
 /// max_summed_magnitude: sums of it must read `with_finite_mask`.
 bool needs_finite_mask(const PixelBlock& block, int nthreads);
 
-/// A copy of `src` with twice the channels: each value as a sum takes it
-/// (`summable`), then for each channel 1 where the value is finite and 0
-/// where not. Summing both halves with the same weights gives a masked
+/// A copy of `src` with twice the channels: the masked values of each
+/// pixel (`masked_values`), its values as a sum takes them, then their
+/// weights. Summing both halves with the same weights gives a masked
 /// numerator and the weights that contributed.
 PixelBlock with_finite_mask(const PixelBlock& src, int nthreads);
 

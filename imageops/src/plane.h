@@ -120,6 +120,15 @@ struct Planes {
     {
         return finite[size_t(c)].data() + offset(x, y);
     }
+    /// Channel c's finite mask row y, from `region.xbegin` (needs `masked()`).
+    T* finite_row(int c, int y) { return finite[size_t(c)].data() + offset(region.xbegin, y); }
+    /// Give planes that have no finite mask one saying every value is
+    /// finite (1 everywhere), as planes summed along with masked ones need.
+    void mask_all_finite()
+    {
+        if (!masked())
+            finite.assign(values.size(), LargeVector<T>(plane_size(region), T(1)));
+    }
 };
 
 }  // namespace mcdenoise

@@ -120,20 +120,18 @@ const SumSource& align_masks(const SumSource& centre, const ROI& window,
     const bool any = centre.masked()
                      || std::any_of(carried.begin(), carried.end(),
                                     [](const CarriedFrame& n) { return n.values.masked(); });
-    const auto ones = [](const SumSource& v) {
-        return Planes<float>(v.region, v.nchannels(), 1.0f).values;
-    };
+    if (!any)
+        return centre;
     for (CarriedFrame& n : carried)
-        if (any && !n.values.masked())
-            n.values.finite = ones(n.values);
-    if (!any || centre.masked())
+        n.values.mask_all_finite();
+    if (centre.masked())
         return centre;
     centre_copy = Planes<float>(window, centre.nchannels());
     for (int ch = 0; ch < centre.nchannels(); ++ch)
         for (int y = window.ybegin; y < window.yend; ++y)
             std::copy_n(centre.from(ch, window.xbegin, y), window.width(),
                         centre_copy.from(ch, window.xbegin, y));
-    centre_copy.finite = ones(centre_copy);
+    centre_copy.mask_all_finite();
     return centre_copy;
 }
 

@@ -5,7 +5,6 @@
 
 
 #include <algorithm>
-#include <cmath>
 
 namespace mcdenoise {
 
@@ -14,18 +13,19 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
 {
     const int nc = chend - chbegin;
     SumSource src(region, nc);
+    // Row y's masked values, with their weights into the finite mask when
+    // `with_mask`; true if some value of the row is not finite.
+    const auto masked_row = [&](int y, bool with_mask) {
+        const float* in = block.pixel(region.xbegin, y) + chbegin;
+        bool any        = false;
+        for (int c = 0; c < nc; ++c)
+            any |= masked_values(in + c, block.nchannels, region.width(), src.row(c, y),
+                                 with_mask ? src.finite_row(c, y) : nullptr, 1);
+        return any;
+    };
     std::vector<uint8_t> row_has_nonfinite(size_t(region.height()));
     parallel_rows(region, nthreads, [&](int y) {
-        const float* in = block.pixel(region.xbegin, y);
-        const size_t at = src.offset(region.xbegin, y);
-        bool any        = false;
-        for (int i = 0; i < region.width(); ++i, in += block.nchannels)
-            for (int c = 0; c < nc; ++c) {
-                const float v = in[chbegin + c];
-                src.values[size_t(c)][at + i] = summable(v);
-                any |= !std::isfinite(v);
-            }
-        row_has_nonfinite[size_t(y - region.ybegin)] = any;
+        row_has_nonfinite[size_t(y - region.ybegin)] = masked_row(y, false);
     });
     if (std::find(row_has_nonfinite.begin(), row_has_nonfinite.end(), uint8_t(1))
         == row_has_nonfinite.end())
@@ -33,13 +33,7 @@ SumSource sum_source(const PixelBlock& block, int chbegin, int chend, const OIIO
     // The finite mask only when some value is not finite: an image of
     // finite values (the usual case) allocates and writes no mask planes.
     src.finite = Planes<float>(region, nc).values;
-    parallel_rows(region, nthreads, [&](int y) {
-        const float* in = block.pixel(region.xbegin, y);
-        const size_t at = src.offset(region.xbegin, y);
-        for (int i = 0; i < region.width(); ++i, in += block.nchannels)
-            for (int c = 0; c < nc; ++c)
-                src.finite[size_t(c)][at + i] = std::isfinite(in[chbegin + c]) ? 1.0f : 0.0f;
-    });
+    parallel_rows(region, nthreads, [&](int y) { masked_row(y, true); });
     return src;
 }
 
@@ -238,11 +232,8 @@ int64_t WeightedSums::write_each(int c0, int c1, Store&& store) const
     for (int c = c0; c < c1; ++c) {
         const float* num = m_num.data() + size_t(c) * m_stride;
         const float* den = m_den.data() + (m_masked ? size_t(c) * m_stride : 0);
-        for (int i = 0; i < m_n; ++i) {
-            const bool any = den[i] > 0.0f;
-            store(c, i, any ? num[i] / den[i] : 0.0f);
-            empty += !any;
-        }
+        for (int i = 0; i < m_n; ++i)
+            store(c, i, masked_mean(num[i], den[i], empty));
     }
     return empty;
 }

@@ -22,9 +22,10 @@
 
 namespace mcdenoise {
 
-/// The values the sums read, as channel planes: each value as a sum takes
-/// it (`summable`: non-finite ones as 0, huge ones clamped) and, when any is
-/// non-finite, the finite mask.
+/// The values the sums read, as channel planes: the masked values
+/// (`masked_values`): each value as a sum takes it (non-finite ones as 0,
+/// huge ones clamped) and, when any is non-finite, their weights as the
+/// finite mask.
 using SumSource = Planes<float>;
 
 /// Channels [chbegin, chend) of `block` (whose channels start at 0) over
