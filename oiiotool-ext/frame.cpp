@@ -222,12 +222,11 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
             continue;
         }
         std::string path = path_of(step.output);
-        const OutputFormat format { options.data_format, options.compression };
         OutputImage output = compose_output(input, inputs.files->integer_channels(input),
                                             written_channels(found.beauty, layers), written_pixels(current, layers),
-                                            format, path);
+                                            options.format, path);
         if (!parts.empty() && writes_parts(path))
-            write_parts(batch, path, parts, output.pixels, format, "-o");
+            write_parts(batch, path, parts, output.pixels, options.format, "-o");
         else
             batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (output.beauty_only && input.nchannels() > int(found.beauty.size()))
