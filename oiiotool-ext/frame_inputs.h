@@ -1,6 +1,7 @@
 // frame_inputs.h: one frame's input as the commands see it: the file read,
 // where its beauty and guides are, the guide images and the beauty as
-// float. Read once per frame by the runner, or held across frames by the
+// float; and what reading it takes of the command line (FrameReading).
+// Read once per frame by the runner, or held across frames by the
 // --temporal window (frame_window.h).
 #pragma once
 
