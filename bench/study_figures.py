@@ -96,9 +96,10 @@ def plot_scene(study, cfg, scene, results, cost, headline_spp, headline_raw_spp,
     save_small(fig, path)
 
 
-def gallery(study, cfg, results, columns, path):
+def gallery(study, cfg, results, entries, columns, path):
     """A grid of crops: a row per scene, columns of (title, spp, entry name;
-    None: the raw render; "ref": the reference), relMSE under each."""
+    None: the raw render; "ref": the reference), relMSE under each; `entries`
+    maps the names to their entries."""
     scenes = cfg["scenes"]
     side = int(round(CROP_FRACTION * cfg["res"]))
     width = len(columns) * (side + 20) / 100 + 0.3  # inches; 0.3 for the scene names
@@ -113,8 +114,7 @@ def gallery(study, cfg, results, columns, path):
                 image = srgb(study.render_path(scene, spp))
                 label = f"relMSE {results[scene][spp]['raw']['relmse']:.3g}"
             else:
-                entry = next(e for e in filter_table.ENTRIES if e.name == name)
-                image = srgb(study.output_path(scene, spp, entry))
+                image = srgb(study.output_path(scene, spp, entries[name]))
                 label = f"relMSE {results[scene][spp][name]['relmse']:.3g}"
             ax.imshow(crop(image, scene), interpolation="nearest")
             ax.set_xticks([])
@@ -147,14 +147,14 @@ def draw(study, cfg, entries, results, cost, out, gallery_spp, headline_spp, hea
                  [(f"{gallery_spp} spp raw", gallery_spp, None)]
                  + [(e.name, gallery_spp, e.name) for e in entries if e.family == family])
                 for family in families]
-    names = {e.name for e in entries}
+    by_name = {e.name: e for e in entries}
     for slug, title, members in filter_table.COMPARISONS:
         sections.append((slug, title, [(f"{headline_raw_spp} spp raw", headline_raw_spp, None)]
                          + [(f"{headline_spp} spp, {n}", headline_spp, n)
-                            for n in members if n in names]))
+                            for n in members if n in by_name]))
     for slug, title, columns in sections:
         rel = os.path.join(IMAGES, f"gallery_{slug}.png")
-        gallery(study, cfg, results, columns + [("reference", None, "ref")],
+        gallery(study, cfg, results, by_name, columns + [("reference", None, "ref")],
                 os.path.join(out, rel))
         figures["galleries"].append((title, rel))
     return figures

@@ -141,14 +141,14 @@ const std::vector<OptionSpec>& option_table()
         { "d", { "TYPE" }, "Output", "Pixel type of the outputs: half, float, uint8, uint16 or uint32.",
           [](Options& o, const std::vector<std::string>& a) {
               require_one_of("-d", a[0], data_formats);
-              o.data_format = a[0];
+              o.format.data_format = a[0];
           } },
         { "compression", { "NAME" }, "Output",
           "Compression of the outputs (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab; "
           "NAME:LEVEL allowed).",
           [](Options& o, const std::vector<std::string>& a) {
               require_one_of("--compression", a[0].substr(0, a[0].find(':')), compressions);
-              o.compression = a[0];
+              o.format.compression = a[0];
           } },
         { "force", {}, "Output", "Allow an output to replace an input file or a write-protected file.",
           [](Options& o, const std::vector<std::string>&) { o.force = true; } },

@@ -5,6 +5,8 @@
 
 #include "error.h"
 #include "frame.h"
+#include "frame_inputs.h"
+#include "frame_window.h"
 #include "help.h"
 #include "options.h"
 #include "preflight.h"
@@ -33,7 +35,7 @@ int run(const Options& options)
     RunStats stats;
     Progress progress(frames.size());
     stats.show_progress_in(&progress);
-    FrameWindow window(options, stats);
+    FrameWindow window(frame_reading(options), stats);
     const bool sequence = !options.frames.empty();
     std::optional<SequenceCompare> compare;
     if (sequence && !options.compare.empty())

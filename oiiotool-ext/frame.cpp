@@ -28,48 +28,54 @@ namespace {
 /// The dst attribute in which the library counts windows with no finite value.
 const char* const empty_windows_attribute = "mcdenoise:empty_windows";
 
-/// Every file this frame reads, for the overwrite check.
-std::vector<std::string> input_paths(const Options& options, const PathForFrame& path_of)
+/// A file a frame writes, with the option that names it ("-o", "--preview").
+using OutputPath = std::pair<std::string, std::string>;
+
+/// Every file this frame reads as `reading` says, and the --compare
+/// reference `compare` (empty: none), for the overwrite check.
+std::vector<std::string> input_paths(const FrameReading& reading, const std::string& compare,
+                                     const PathForFrame& path_of)
 {
-    std::vector<std::string> paths = { path_of(options.input) };
-    for (const AovRequest& aov : options.aovs)
+    std::vector<std::string> paths = { path_of(reading.input) };
+    for (const AovRequest& aov : reading.aovs)
         paths.push_back(path_of(aov.file));
-    if (!options.compare.empty())
-        paths.push_back(path_of(options.compare));
+    if (!compare.empty())
+        paths.push_back(path_of(compare));
     return paths;
 }
 
-/// Every file this frame writes, with the option that names it.
-std::vector<std::pair<std::string, std::string>> output_paths(const Options& options, const PathForFrame& path_of)
+/// Every file this frame writes: the -o of `steps`, and `preview` (empty:
+/// none).
+std::vector<OutputPath> output_paths(const std::vector<Step>& steps, const std::string& preview,
+                                     const PathForFrame& path_of)
 {
-    std::vector<std::pair<std::string, std::string>> paths;
-    for (const Step& step : options.steps)
+    std::vector<OutputPath> paths;
+    for (const Step& step : steps)
         if (!step.command)
             paths.emplace_back("-o", path_of(step.output));
-    if (!options.preview.empty())
-        paths.emplace_back("--preview", path_of(options.preview));
+    if (!preview.empty())
+        paths.emplace_back("--preview", path_of(preview));
     return paths;
 }
 
-/// Throws unless every output can be written: none would replace an input
-/// or a write-protected file (unless --force is given), and the folders
-/// exist (made if missing). Runs before any input is read.
-void prepare_outputs(const Options& options, const PathForFrame& path_of)
+/// Throws unless every one of `outputs` can be written: none would replace
+/// one of `inputs` or a write-protected file (unless `force`, --force), and
+/// the folders exist (made if missing). Runs before any input is read.
+void prepare_outputs(const std::vector<OutputPath>& outputs, const std::vector<std::string>& inputs, bool force)
 {
-    for (const auto& [option, output] : output_paths(options, path_of)) {
-        if (!options.force)
-            for (const std::string& input : input_paths(options, path_of))
+    for (const auto& [option, output] : outputs) {
+        if (!force)
+            for (const std::string& input : inputs)
                 if (same_file(output, input))
                     throw RunError(format("{} : '{}' is an input of this run; add --force to replace it", option,
                                           output));
-        prepare_output_path(option, output, options.force);
+        prepare_output_path(option, output, force);
     }
 }
 
-/// True if --skip-existing applies: every output of the frame exists.
-bool all_outputs_exist(const Options& options, const PathForFrame& path_of)
+/// True if --skip-existing applies: every one of `outputs` exists.
+bool all_outputs_exist(const std::vector<OutputPath>& outputs)
 {
-    auto outputs = output_paths(options, path_of);
     if (outputs.empty())
         return false;
     for (const auto& output : outputs)
@@ -155,18 +161,19 @@ struct LoadedFrame {
     WindowFrames window;  ///< with --temporal
 };
 
-/// Reads `frame`, from `window` with --temporal (a window of its own if
-/// `window` is nullptr).
-LoadedFrame load_frame(const Options& options, std::optional<int> frame, RunStats& stats, FrameWindow* window)
+/// Reads `frame` as `reading` says, from `window` with --temporal (a window
+/// of its own if `window` is nullptr).
+LoadedFrame load_frame(const FrameReading& reading, std::optional<int> frame, RunStats& stats,
+                       FrameWindow* window)
 {
     LoadedFrame loaded;
-    if (options.temporal == 0 || !frame) {
-        loaded.own_inputs = read_frame_inputs(options, frame, stats);
+    if (reading.temporal == 0 || !frame) {
+        loaded.own_inputs = read_frame_inputs(reading, frame, stats);
         loaded.inputs = loaded.own_inputs.get();
         return loaded;
     }
     if (!window) {
-        loaded.own_window = std::make_unique<FrameWindow>(options, stats);
+        loaded.own_window = std::make_unique<FrameWindow>(reading, stats);
         window = loaded.own_window.get();
     }
     loaded.inputs = &window->centre(*frame);
@@ -180,11 +187,13 @@ LoadedFrame load_frame(const Options& options, std::optional<int> frame, RunStat
 FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStats& stats, const SequenceRun& run)
 {
     PathForFrame path_of = [&](const std::string& path) { return path_for_frame(path, frame); };
-    if (options.skip_existing && all_outputs_exist(options, path_of))
+    const std::vector<OutputPath> outputs = output_paths(options.steps, options.preview, path_of);
+    if (options.skip_existing && all_outputs_exist(outputs))
         return FrameOutcome::skipped;
-    prepare_outputs(options, path_of);
+    const FrameReading reading = frame_reading(options);
+    prepare_outputs(outputs, input_paths(reading, options.compare, path_of), options.force);
 
-    const LoadedFrame loaded = load_frame(options, frame, stats, run.window);
+    const LoadedFrame loaded = load_frame(reading, frame, stats, run.window);
     const FrameInputs& inputs = *loaded.inputs;
     const ImageBuf& input = *inputs.input;
     const std::string& input_path = inputs.path;
@@ -222,12 +231,11 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
             continue;
         }
         std::string path = path_of(step.output);
-        const OutputFormat format { options.data_format, options.compression };
         OutputImage output = compose_output(input, inputs.files->integer_channels(input),
                                             written_channels(found.beauty, layers), written_pixels(current, layers),
-                                            format, path);
+                                            options.format, path);
         if (!parts.empty() && writes_parts(path))
-            write_parts(batch, path, parts, output.pixels, format, "-o");
+            write_parts(batch, path, parts, output.pixels, options.format, "-o");
         else
             batch.write(path, output.spec, output.pixels, "-o", output.stored);
         if (output.beauty_only && input.nchannels() > int(found.beauty.size()))

@@ -28,26 +28,34 @@ uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides
 
 }  // namespace
 
+FrameReading frame_reading(const Options& options)
+{
+    return FrameReading{ options.input, options.beauty_channels, options.aovs,
+                         roles_used(options.steps, options.temporal > 0), options.temporal,
+                         options.memory_limit_mb };
+}
+
 std::string path_for_frame(const std::string& path, std::optional<int> frame)
 {
     return frame ? frame_path(path, *frame) : path;
 }
 
-std::unique_ptr<FrameInputs> read_frame_inputs(const Options& options, std::optional<int> frame, RunStats& stats)
+std::unique_ptr<FrameInputs> read_frame_inputs(const FrameReading& reading, std::optional<int> frame, RunStats& stats)
 {
     PathForFrame path_of = [&](const std::string& path) { return path_for_frame(path, frame); };
     auto inputs = std::make_unique<FrameInputs>();
-    inputs->path = path_of(options.input);
-    const uint64_t memory_limit = memory_limit_bytes(options.memory_limit_mb);
+    inputs->path = path_of(reading.input);
+    const uint64_t memory_limit = memory_limit_bytes(reading.memory_limit_mb);
     inputs->files = std::make_unique<ImageFiles>(stats, memory_limit);
     inputs->input = &inputs->files->get(inputs->path, "input");
     const ImageBuf& input = *inputs->input;
     warn_if_display_referred(input, "input");
-    inputs->found = discover_channels(input.spec(), options.beauty_channels, inputs->path);
-    inputs->guides = load_guides(input, inputs->path, inputs->found, options, path_of, *inputs->files);
-    require_memory(frame_bytes(input, inputs->found, inputs->guides, options.temporal > 0 && frame), memory_limit,
+    inputs->found = discover_channels(input.spec(), reading.beauty_channels, inputs->path);
+    inputs->guides =
+        load_guides(input, inputs->path, inputs->found, reading.aovs, reading.roles, path_of, *inputs->files);
+    require_memory(frame_bytes(input, inputs->found, inputs->guides, reading.temporal > 0 && frame), memory_limit,
                    inputs->path,
-                   options.temporal > 0 && frame
+                   reading.temporal > 0 && frame
                        ? "this frame (input, output copy, 3 beauty buffers, the guides and the frame prepared for "
                          "--temporal, as float)"
                        : "this frame (input, output copy, 3 beauty buffers and the guides, as float)");

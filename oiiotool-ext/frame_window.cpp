@@ -59,7 +59,7 @@ FrameWindow::Held& FrameWindow::get(int frame)
 {
     auto found = held_.find(frame);
     if (found == held_.end())
-        found = held_.emplace(frame, Held{ read_frame_inputs(options_, frame, stats_),
+        found = held_.emplace(frame, Held{ read_frame_inputs(reading_, frame, stats_),
                                            std::make_unique<mcdenoise::PreparedFrame>() })
                     .first;
     return found->second;
@@ -68,7 +68,7 @@ FrameWindow::Held& FrameWindow::get(int frame)
 const FrameInputs& FrameWindow::centre(int frame)
 {
     for (auto it = held_.begin(); it != held_.end();)
-        it = std::abs(it->first - frame) > options_.temporal ? held_.erase(it) : std::next(it);
+        it = std::abs(it->first - frame) > reading_.temporal ? held_.erase(it) : std::next(it);
     return *get(frame).inputs;
 }
 
@@ -82,11 +82,11 @@ std::vector<WindowFrame> FrameWindow::neighbours(int frame)
 {
     const FrameInputs& centre_inputs = *get(frame).inputs;
     std::vector<WindowFrame> found;
-    for (int offset = -options_.temporal; offset <= options_.temporal; ++offset) {
+    for (int offset = -reading_.temporal; offset <= reading_.temporal; ++offset) {
         const int other = frame + offset;
         if (offset == 0)
             continue;
-        const std::string path = path_for_frame(options_.input, other);
+        const std::string path = path_for_frame(reading_.input, other);
         if (!held_.count(other) && !OIIO::Filesystem::exists(path)) {
             std::fprintf(stderr, "mcdtool WARNING: frame %d: --temporal : neighbour frame %d (%s) does not exist: "
                          "left out\n", frame, other, path.c_str());

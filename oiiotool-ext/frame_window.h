@@ -7,13 +7,13 @@
 
 #include "commands.h"
 #include "frame_inputs.h"
-#include "options.h"
 #include "runstats.h"
 
 #include <mcdenoise/temporal.h>
 
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace mcdtool {
@@ -21,7 +21,8 @@ namespace mcdtool {
 /// The frames held by a --temporal run.
 class FrameWindow {
 public:
-    FrameWindow(const Options& options, RunStats& stats) : options_(options), stats_(stats) {}
+    /// A window of the frames read as `reading` says, N = `reading.temporal`.
+    FrameWindow(FrameReading reading, RunStats& stats) : reading_(std::move(reading)), stats_(stats) {}
 
     /// The inputs of `frame`, read now unless held; drops the held frames
     /// farther than N from it. Throws RunError naming the file.
@@ -49,7 +50,7 @@ private:
     /// `frame`, read now unless held.
     Held& get(int frame);
 
-    const Options& options_;
+    const FrameReading reading_;
     RunStats& stats_;
     std::map<int, Held> held_;
 };

@@ -10,8 +10,6 @@
 
 #include <cstdio>
 
-#include <set>
-
 namespace mcdtool {
 
 using OIIO::Strutil::fmt::format;
@@ -63,21 +61,6 @@ std::string guide_source(const std::string& path, const ImageSpec& spec, Role ro
                   cryptomatte_guide(spec, role, indices) ? " (Cryptomatte ids)" : "");
 }
 
-/// The guide roles the commands of `options` need or use when present (the
-/// motion guide only across frames, with --temporal).
-std::set<Role> roles_used(const Options& options)
-{
-    std::set<Role> used;
-    if (options.temporal > 0)
-        used.insert(Role::motion);
-    for (const Step& step : options.steps)
-        if (step.command) {
-            used.insert(step.command->roles.begin(), step.command->roles.end());
-            used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
-        }
-    return used;
-}
-
 /// Throws unless the guide file `file` has `input`'s display window (a
 /// guide rendered at another resolution would be cropped, not scaled).
 void require_same_display_window(const ImageBuf& file, const ImageBuf& input, const std::string& context)
@@ -111,6 +94,19 @@ void warn_constant_ids(const Guides& guides, const std::set<Role>& used)
 
 }  // namespace
 
+std::set<Role> roles_used(const std::vector<Step>& steps, bool across_frames)
+{
+    std::set<Role> used;
+    if (across_frames)
+        used.insert(Role::motion);
+    for (const Step& step : steps)
+        if (step.command) {
+            used.insert(step.command->roles.begin(), step.command->roles.end());
+            used.insert(step.command->optional_roles.begin(), step.command->optional_roles.end());
+        }
+    return used;
+}
+
 void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::string& context)
 {
     OIIO::ROI g = guide.roi();
@@ -122,17 +118,17 @@ void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::
 }
 
 Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
-                   const Options& options, const PathForFrame& frame_path_of, ImageFiles& files)
+                   const std::vector<AovRequest>& aovs, const std::set<Role>& used,
+                   const PathForFrame& frame_path_of, ImageFiles& files)
 {
     Guides guides;
     int beauty_channels = int(found.beauty.size());
-    const std::set<Role> used = roles_used(options);
     for (const auto& [role, indices] : found.roles) {
         if (used.count(role))
             guides.images[role] = guide_image(files, input, role, indices);
         guides.sources[role] = guide_source(input_path, input.spec(), role, indices);
     }
-    for (const AovRequest& aov : options.aovs) {
+    for (const AovRequest& aov : aovs) {
         const RoleInfo& info = role_info(aov.role);
         std::string context = "--aov " + aov.typed;
         std::string path = frame_path_of(aov.file);

@@ -10,18 +10,25 @@
 #include "options.h"
 
 #include <functional>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace mcdtool {
 
 /// Maps a path as typed (maybe a frame pattern) to this frame's file.
 using PathForFrame = std::function<std::string(const std::string&)>;
 
-/// The guides of one frame: every --aov file, and each guide discovered in
-/// `input` that a command of `options.steps` needs or uses (the others only
-/// get a source, for -v).
+/// The guide roles the commands of `steps` need or use when present, and
+/// the motion guide when the frames are denoised `across_frames` (--temporal).
+std::set<Role> roles_used(const std::vector<Step>& steps, bool across_frames);
+
+/// The guides of one frame: every --aov file of `aovs`, and each guide
+/// discovered in `input` whose role is in `used` (the others only get a
+/// source, for -v).
 Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
-                   const Options& options, const PathForFrame& frame_path_of, ImageFiles& files);
+                   const std::vector<AovRequest>& aovs, const std::set<Role>& used,
+                   const PathForFrame& frame_path_of, ImageFiles& files);
 
 /// Throws RunError unless `guides` holds every role `command` needs; the
 /// message names the command, the role and where it was looked for.

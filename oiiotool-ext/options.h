@@ -41,6 +41,12 @@ struct DisplayChoice {
     bool given() const { return !ocio_config.empty() || !display.empty() || !view.empty(); }
 };
 
+/// What -d and --compression change of the input file's spec.
+struct OutputFormat {
+    std::string data_format;  ///< -d (empty: the input's)
+    std::string compression;  ///< --compression (empty: the input's)
+};
+
 /// What the program was asked to do.
 enum class Mode { run, help, help_markdown, version };
 
@@ -54,8 +60,7 @@ struct Options {
     std::string light_passes;        ///< --aovs auto|LIST (empty: none)
     std::string frames;              ///< --frames (empty: a single image)
     int temporal = 0;                ///< --temporal: frames before and after each frame --denoise uses
-    std::string data_format;         ///< -d (empty: the input's)
-    std::string compression;         ///< --compression (empty: the input's)
+    OutputFormat format;             ///< -d, --compression
     std::string compare;             ///< --compare REF
     std::string preview;             ///< --preview FILE.png
     DisplayChoice display;           ///< --ocio-config, --display, --view

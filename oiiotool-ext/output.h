@@ -9,6 +9,7 @@
 #pragma once
 
 #include "input.h"
+#include "options.h"
 #include "runstats.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -59,12 +60,6 @@ private:
     };
     RunStats& stats_;
     std::vector<Pending> pending_;
-};
-
-/// What -d and --compression change of the input file's spec.
-struct OutputFormat {
-    std::string data_format;  ///< -d (empty: the input's)
-    std::string compression;  ///< --compression (empty: the input's)
 };
 
 /// Applies `format` to `spec`: -d sets every channel's pixel type,

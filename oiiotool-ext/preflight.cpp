@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "error.h"
 #include "foreign_motion.h"
+#include "frame_inputs.h"
 #include "frames.h"
 #include "light_passes.h"
 #include "parts.h"
@@ -38,27 +39,27 @@ std::optional<ImageSpec> header(const std::string& path)
     return parts.empty() ? in->spec() : merged_spec(parts);
 }
 
-/// The first frame whose input exists.
-std::optional<std::optional<int>> first_readable_frame(const Options& options)
+/// The first frame of `frame_list` (--frames) whose `input` exists.
+std::optional<std::optional<int>> first_readable_frame(const std::string& frame_list, const std::string& input)
 {
-    for (const std::optional<int>& frame : frames_to_run(options.frames))
-        if (OIIO::Filesystem::exists(frame ? frame_path(options.input, *frame) : options.input))
+    for (const std::optional<int>& frame : frames_to_run(frame_list))
+        if (OIIO::Filesystem::exists(frame ? frame_path(input, *frame) : input))
             return frame;
     return std::nullopt;
 }
 
-/// The channel selectors (--beauty, --aov ...:CHANNELS) against the
-/// headers of `frame`'s files.
-void check_selectors(const Options& options, std::optional<int> frame)
+/// The channel selectors (--beauty, --aov ...:CHANNELS) of `reading` and
+/// `light_passes` (--aovs) against the headers of `frame`'s files.
+void check_selectors(const FrameReading& reading, const std::string& light_passes, std::optional<int> frame)
 {
     auto path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
-    if (!options.beauty_channels.empty() || !options.light_passes.empty())
-        if (auto spec = header(path_of(options.input))) {
-            const Discovery found = discover_channels(*spec, options.beauty_channels, path_of(options.input));
-            if (!options.light_passes.empty())
-                find_light_passes(*spec, options.light_passes, found, path_of(options.input));
+    if (!reading.beauty_channels.empty() || !light_passes.empty())
+        if (auto spec = header(path_of(reading.input))) {
+            const Discovery found = discover_channels(*spec, reading.beauty_channels, path_of(reading.input));
+            if (!light_passes.empty())
+                find_light_passes(*spec, light_passes, found, path_of(reading.input));
         }
-    for (const AovRequest& aov : options.aovs)
+    for (const AovRequest& aov : reading.aovs)
         if (!aov.channels.empty())
             if (auto spec = header(path_of(aov.file)))
                 select_channels(*spec, aov.channels, path_of(aov.file), "--aov " + aov.typed);
@@ -74,10 +75,10 @@ ImageBuf one_pixel(int nchannels)
 /// needs, so that the parameter rules only the library knows (--dof FOCUS
 /// below LEVELS, the widest window it implies) fail before any input is
 /// read, with the library's own message. The rules stay in the library.
-void check_parameters(const Options& options)
+void check_parameters(const std::vector<Step>& steps)
 {
     constexpr int beauty_channels = 3;
-    for (const Step& step : options.steps) {
+    for (const Step& step : steps) {
         if (!step.command)
             continue;
         const Command& command = *step.command;
@@ -94,49 +95,51 @@ void check_parameters(const Options& options)
     }
 }
 
-/// --aovs needs a command that denoises the light passes.
-void check_light_passes(const Options& options)
+/// `light_passes` (--aovs) needs a command of `steps` that denoises the
+/// light passes.
+void check_light_passes(const std::string& light_passes, const std::vector<Step>& steps)
 {
-    if (options.light_passes.empty()
-        || std::any_of(options.steps.begin(), options.steps.end(),
+    if (light_passes.empty()
+        || std::any_of(steps.begin(), steps.end(),
                        [](const Step& s) { return s.command && s.command->takes_layers; }))
         return;
     throw UsageError("--aovs : needs --denoise, which denoises the light passes with the beauty");
 }
 
-/// Throws unless --temporal N > 0 comes with what it works on: a sequence
-/// (--frames) and a --denoise step.
-void check_temporal(const Options& options)
+/// Throws unless `temporal` (--temporal N) > 0 comes with what it works on:
+/// a sequence (`frame_list`, --frames) and a --denoise first of `steps`, and
+/// no `light_passes` (--aovs).
+void check_temporal(int temporal, const std::string& frame_list, const std::vector<Step>& steps,
+                    const std::string& light_passes)
 {
-    if (options.temporal == 0)
+    if (temporal == 0)
         return;
-    if (options.frames.empty())
+    if (frame_list.empty())
         throw UsageError(format("--temporal {} : needs a frame sequence (a pattern input with --frames)",
-                                options.temporal));
-    auto first = std::find_if(options.steps.begin(), options.steps.end(), [](const Step& step) {
-        return step.command != nullptr;
-    });
-    if (first == options.steps.end() || std::string(first->command->name) != "denoise")
+                                temporal));
+    auto first = std::find_if(steps.begin(), steps.end(), [](const Step& step) { return step.command != nullptr; });
+    if (first == steps.end() || std::string(first->command->name) != "denoise")
         throw UsageError(format("--temporal {} : only --denoise works across frames, and it must be the first "
-                                "command (the neighbouring frames enter it as read)", options.temporal));
-    if (!options.light_passes.empty())
+                                "command (the neighbouring frames enter it as read)", temporal));
+    if (!light_passes.empty())
         throw UsageError(format("--temporal {} : cannot be combined with --aovs: the light passes are denoised "
-                                "one frame at a time (run --aovs without --temporal)", options.temporal));
+                                "one frame at a time (run --aovs without --temporal)", temporal));
 }
 
-/// With --temporal, warns once when `frame`'s input has no motion guide but
-/// another renderer's motion pass that mcdtool does not convert.
-void warn_foreign_motion(const Options& options, std::optional<int> frame)
+/// With --temporal, warns once when `frame`'s input (read as `reading`
+/// says) has no motion guide but another renderer's motion pass that
+/// mcdtool does not convert.
+void warn_foreign_motion(const FrameReading& reading, std::optional<int> frame)
 {
-    const bool given = std::any_of(options.aovs.begin(), options.aovs.end(),
+    const bool given = std::any_of(reading.aovs.begin(), reading.aovs.end(),
                                    [](const AovRequest& aov) { return aov.role == Role::motion; });
-    if (options.temporal == 0 || given)
+    if (reading.temporal == 0 || given)
         return;
-    const std::string path = frame ? frame_path(options.input, *frame) : options.input;
+    const std::string path = frame ? frame_path(reading.input, *frame) : reading.input;
     auto spec = header(path);
     if (!spec)
         return;
-    Discovery found = discover_channels(*spec, options.beauty_channels, path);
+    Discovery found = discover_channels(*spec, reading.beauty_channels, path);
     std::string foreign = found.roles.count(Role::motion) ? "" : foreign_motion_pass(*spec, found.layer);
     if (!foreign.empty())
         std::fprintf(stderr,
@@ -161,15 +164,16 @@ std::vector<std::optional<int>> frames_to_run(const std::string& frame_list)
 
 void check_arguments(const Options& options)
 {
-    check_parameters(options);
-    check_light_passes(options);
+    check_parameters(options.steps);
+    check_light_passes(options.light_passes, options.steps);
     try {
         if (!options.preview.empty() || options.display.given())
             check_display(options.display);
-        check_temporal(options);
-        if (auto frame = first_readable_frame(options)) {
-            check_selectors(options, *frame);
-            warn_foreign_motion(options, *frame);
+        check_temporal(options.temporal, options.frames, options.steps, options.light_passes);
+        if (auto frame = first_readable_frame(options.frames, options.input)) {
+            const FrameReading reading = frame_reading(options);
+            check_selectors(reading, options.light_passes, *frame);
+            warn_foreign_motion(reading, *frame);
         }
     } catch (const RunError& error) {
         throw UsageError(error.what());

@@ -5,6 +5,8 @@
 
 #include "oiiotool-ext/error.h"
 #include "oiiotool-ext/frame.h"
+#include "oiiotool-ext/frame_inputs.h"
+#include "oiiotool-ext/frame_window.h"
 #include "oiiotool-ext/frames.h"
 #include "oiiotool-ext/options.h"
 #include "oiiotool-ext/preflight.h"
@@ -41,7 +43,8 @@ std::string run_frame(const std::vector<std::string>& args, std::optional<int> f
 /// (each file of the task's frames and their neighbours read once).
 class FrameRunner {
 public:
-    explicit FrameRunner(const std::vector<std::string>& args) : options_(parse_for_run(args)), window_(options_, stats_)
+    explicit FrameRunner(const std::vector<std::string>& args)
+        : options_(parse_for_run(args)), window_(mcdtool::frame_reading(options_), stats_)
     {
     }
     /// Runs one frame as `_run_frame` does.
