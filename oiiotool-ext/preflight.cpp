@@ -43,7 +43,7 @@ std::optional<ImageSpec> header(const std::string& path)
 std::optional<std::optional<int>> first_readable_frame(const std::string& frame_list, const std::string& input)
 {
     for (const std::optional<int>& frame : frames_to_run(frame_list))
-        if (OIIO::Filesystem::exists(frame ? frame_path(input, *frame) : input))
+        if (OIIO::Filesystem::exists(path_for_frame(input, frame)))
             return frame;
     return std::nullopt;
 }
@@ -52,7 +52,7 @@ std::optional<std::optional<int>> first_readable_frame(const std::string& frame_
 /// `light_passes` (--aovs) against the headers of `frame`'s files.
 void check_selectors(const FrameReading& reading, const std::string& light_passes, std::optional<int> frame)
 {
-    auto path_of = [&](const std::string& path) { return frame ? frame_path(path, *frame) : path; };
+    auto path_of = [&](const std::string& path) { return path_for_frame(path, frame); };
     if (!reading.beauty_channels.empty() || !light_passes.empty())
         if (auto spec = header(path_of(reading.input))) {
             const Discovery found = discover_channels(*spec, reading.beauty_channels, path_of(reading.input));
@@ -135,7 +135,7 @@ void warn_foreign_motion(const FrameReading& reading, std::optional<int> frame)
                                    [](const AovRequest& aov) { return aov.role == Role::motion; });
     if (reading.temporal == 0 || given)
         return;
-    const std::string path = frame ? frame_path(reading.input, *frame) : reading.input;
+    const std::string path = path_for_frame(reading.input, frame);
     auto spec = header(path);
     if (!spec)
         return;
