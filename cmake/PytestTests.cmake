@@ -1,7 +1,8 @@
-# mcd_add_pytest_tests(PREFIX FILE ENVIRONMENT LABELS): one CTest test
+# mcd_add_pytest_tests(PREFIX FILE ENVIRONMENT LABELS [FIXTURES]): one CTest test
 # PREFIX.<name> per top-level `def test_<name>(` of the pytest FILE, run with
 # Debian's /usr/bin/python3 in FILE's directory, so CTest's summary counts
-# every Python test case. ENVIRONMENT and LABELS are lists; a test whose
+# every Python test case. ENVIRONMENT, LABELS and the fixtures each test
+# requires (FIXTURES_REQUIRED) are lists; a test whose
 # pytest run reports "N skipped in <time>" counts as skipped (not a failure
 # whose output quotes mcdtool's "0 skipped" frame summary).
 function(mcd_add_pytest_tests prefix pytest_file environment labels)
@@ -18,5 +19,8 @@ function(mcd_add_pytest_tests prefix pytest_file environment labels)
     set_tests_properties(${prefix}.${test_name} PROPERTIES
                          ENVIRONMENT "${environment}" LABELS "${labels}"
                          SKIP_REGULAR_EXPRESSION "[0-9]+ skipped in [0-9.]+s")
+    if(ARGC GREATER 4)
+      set_tests_properties(${prefix}.${test_name} PROPERTIES FIXTURES_REQUIRED "${ARGV4}")
+    endif()
   endforeach()
 endfunction()

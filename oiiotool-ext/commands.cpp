@@ -29,6 +29,16 @@ const ImageBuf& Call::guide(Role role) const { return guides.images.at(role); }
 
 const ImageBuf* Call::optional_guide(Role role) const { return present(guides, role); }
 
+mcdenoise::Guides library_guides(const Guides& images)
+{
+    mcdenoise::Guides guides;
+    for (const RoleInfo& info : role_table())
+        for (const mcdenoise::GuideField& field : mcdenoise::guide_fields)
+            if (std::string_view(field.name) == info.argument)
+                guides.*field.member = present(images, info.role);
+    return guides;
+}
+
 namespace {
 
 /// The window-side parameter every window filter takes.
@@ -56,18 +66,6 @@ std::vector<Role> roles_of(mcdenoise::GuideMask guides)
         if (guides & mcdenoise::guide_bit(info.argument))
             roles.push_back(info.role);
     return roles;
-}
-
-/// The present guides of `images` in the library's form: each role whose
-/// argument names a `Guides` field fills it.
-mcdenoise::Guides library_guides(const Guides& images)
-{
-    mcdenoise::Guides guides;
-    for (const RoleInfo& info : role_table())
-        for (const mcdenoise::GuideField& field : mcdenoise::guide_fields)
-            if (std::string_view(field.name) == info.argument)
-                guides.*field.member = present(images, info.role);
-    return guides;
 }
 
 /// The present guides of `call` in the library's form.

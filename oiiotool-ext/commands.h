@@ -16,6 +16,7 @@
 
 namespace mcdenoise {
 struct PreparedFrame;
+struct Guides;
 }
 
 namespace mcdtool {
@@ -42,6 +43,10 @@ struct Guides {
     std::map<Role, ImageBuf> images;
     std::map<Role, std::string> sources;  ///< "render.exr: N.X,N.Y,N.Z"
 };
+
+/// The present guides of `images` in the library's form: each role whose
+/// argument names a `Guides` field fills it.
+mcdenoise::Guides library_guides(const Guides& images);
 
 /// A frame of a --temporal window as --denoise takes it: its beauty as
 /// read, its guides, and where the window keeps its preparation for the

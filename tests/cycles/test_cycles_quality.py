@@ -1,0 +1,110 @@
+"""test_cycles_quality.py: regressions of mcdtool's quality on the small
+Cycles set (make_cycles_set: 128x96, 1024-spp references; Blender 3.4,
+factory sampling, no variance pass). Each limit comes from the figure
+measured when it was set (MEASURED, on 2026-12-04 with the code of that
+day) with a 25 % margin, and is never above raw (1.0) except where today's
+code is known to be worse than raw: those cases are listed in KNOWN_WORSE
+with the issue that brings them below raw, and only guard against getting
+worse still (docs/quality.md, "Real Cycles renders", shows them)."""
+import os
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import render_figures as rf  # noqa: E402
+
+SET = os.environ.get("MCD_CYCLES_SET_DIR", "")
+STILLS = ("dof", "metal", "interior", "glossy", "glass", "volume", "product")
+SPPS = (4, 16, 64)
+MARGIN = 1.25
+
+# --denoise relMSE over raw, per still and spp, as measured.
+DENOISE = {
+    "dof": (36.3, 103.3, 96.5), "metal": (0.454, 0.594, 1.879),
+    "interior": (0.101, 0.091, 0.158), "glossy": (0.187, 0.270, 0.600),
+    "glass": (0.092, 0.219, 0.537), "volume": (0.147, 0.215, 0.264),
+    "product": (1.385, 3.461, 15.33),
+}
+# The worst ratio of a written light pass's relMSE to its raw relMSE
+# under --aovs auto --denoise, per still and spp, as measured.
+AOV_WORST = {
+    "dof": (164.8, 498.2, 142.4), "metal": (0.88, 2.50, 5.40),
+    "interior": (0.63, 0.91, 3.28), "glossy": (1.46, 1.56, 2.85),
+    "glass": (1.00, 120.6, 1677.0), "volume": (0.40, 1.57, 3.17),
+    "product": (1.74, 10.0, 21.2),
+}
+# Shots: --temporal over per-frame --denoise, as measured.
+TEMPORAL = {
+    "shot_static": {"rel_mse": 0.81, "flicker": 0.54},
+    "shot_truck": {"rel_mse": 0.90, "temporal": 0.84},
+}
+# Where today's code is worse than raw, and the issue that fixes it.
+KNOWN_WORSE = {
+    "denoise": "#31 (highlights spread as a 10 px glow): dof, metal at 64 spp, product",
+    "aovs": "#33 (light passes denoised with the beauty's weights)",
+}
+
+
+def limit(measured):
+    """The measured figure with the margin, capped at raw unless known worse."""
+    return measured * MARGIN if measured > 1.0 else min(1.0, measured * MARGIN)
+
+
+@pytest.fixture(scope="module")
+def tool(tmp_path_factory):
+    if not os.path.isdir(SET):
+        pytest.fail(f"no Cycles set at '{SET}' (CTest's make_cycles_set renders it)")
+    return rf.Mcdtool(os.environ["MCDTOOL"], str(tmp_path_factory.mktemp("cycles")))
+
+
+def test_denoise_no_worse_than_raw_on_every_still(tool):
+    failures = []
+    for scene in STILLS:
+        for spp, measured in zip(SPPS, DENOISE[scene]):
+            f = rf.still_figures(tool, SET, scene, spp)
+            ratio = f["denoise"] / f["raw"]
+            print(f"{scene} {spp} spp: --denoise {f['denoise']:.5f}, raw {f['raw']:.5f}, ratio {ratio:.3f}")
+            if ratio > limit(measured):
+                failures.append(f"{scene} {spp} spp: ratio {ratio:.3f} > {limit(measured):.3f}")
+    assert not failures, failures
+
+
+def test_denoise_keeps_the_frame_mean(tool):
+    for scene in STILLS:
+        for spp in SPPS:
+            mean = rf.still_figures(tool, SET, scene, spp)["denoise mean"]
+            assert 0.93 <= mean <= 1.05, f"{scene} {spp} spp: frame mean {mean:.3f} of the reference's"
+
+
+def test_light_passes_no_worse_than_raw(tool):
+    failures = []
+    for scene in STILLS:
+        for spp, measured in zip(SPPS, AOV_WORST[scene]):
+            f = rf.aov_figures(tool, SET, scene, spp)
+            for name, (raw, out) in f["passes"].items():
+                if raw < 1e-6:  # a pass with no light in it
+                    continue
+                if out / raw > limit(measured):
+                    failures.append(f"{scene} {spp} spp {name}: {out / raw:.2f}x raw > {limit(measured):.2f}")
+    assert not failures, failures
+
+
+def test_light_passes_rebuild_the_written_beauty(tool):
+    for scene in ("dof", "metal", "interior", "glossy", "glass", "volume"):
+        f = rf.aov_figures(tool, SET, scene, 16)
+        assert f["rebuild"] <= 1e-6, f"{scene}: written passes against the written beauty, relMSE {f['rebuild']:.2e}"
+
+
+def test_temporal_no_worse_than_per_frame_on_the_static_shot(tool):
+    f = rf.shot_figures(tool, SET, "shot_static")
+    for figure, measured in TEMPORAL["shot_static"].items():
+        ratio = f["temporal"][figure] / f["per-frame"][figure]
+        assert ratio <= limit(measured), f"static shot {figure}: {ratio:.3f}x per-frame"
+
+
+def test_temporal_no_worse_than_per_frame_on_the_moving_shot(tool):
+    f = rf.shot_figures(tool, SET, "shot_truck")
+    for figure, measured in TEMPORAL["shot_truck"].items():
+        ratio = f["temporal"][figure] / f["per-frame"][figure]
+        assert ratio <= limit(measured), f"moving shot {figure}: {ratio:.3f}x per-frame"
