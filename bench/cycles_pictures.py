@@ -19,17 +19,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import render_figures as rf  # noqa: E402
 
 
-def srgb(linear):
-    x = np.clip(linear, 0.0, 1.0)
-    return np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
-
-
 def write_row(path, panels, scale):
     """The panels side by side, 4 px apart, each enlarged `scale` times."""
     gap = np.ones((panels[0].shape[0] * scale, 4, 3), np.float32)
     row = []
     for p in panels:
-        row += [np.kron(srgb(p), np.ones((scale, scale, 1))).astype(np.float32), gap]
+        row += [np.kron(rf.srgb(p), np.ones((scale, scale, 1))).astype(np.float32), gap]
     pixels = np.concatenate(row[:-1], axis=1)
     h, w, _ = pixels.shape
     buf = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, oiio.UINT8))

@@ -76,6 +76,12 @@ class Image:
         return found
 
 
+def srgb(linear):
+    """Display-referred values in [0, 1] of `linear` (clamped), for pictures."""
+    x = np.clip(linear, 0.0, 1.0)
+    return np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
+
+
 def rel_mse(x, ref):
     return float(mcdenoise.rel_mse(np.ascontiguousarray(x), np.ascontiguousarray(ref)))
 
