@@ -1,14 +1,16 @@
 #!/usr/bin/python3
 """cycles_pictures.py: docs/quality.md's pictures of what goes wrong on real
 Cycles renders, raw | result | reference, from the results bench/render_table
-left in BUILD_DIR/render_table/cycles_bench_set/cycles/:
+left in BUILD_DIR/render_table/cycles_bench_set/cycles/ (with --small, of
+the small set cycles_set/, as `bench/render_table --small` leaves them):
 
 - glint.png: the dof still at 16 spp, `--denoise`, a crop around the sun
   glint on the chrome sphere (the reference's brightest GlossDir pixel);
 - direct_pass.png: a direct-light pass of `--aovs auto --denoise` at 16 spp.
 
-Usage: PYTHONPATH=build/python /usr/bin/python3 bench/cycles_pictures.py BUILD_DIR OUT_DIR [SCENE PASS]
+Usage: PYTHONPATH=build/python /usr/bin/python3 bench/cycles_pictures.py BUILD_DIR OUT_DIR [--small] [SCENE PASS]
 (default SCENE PASS: glossy GlossDir)."""
+import argparse
 import os
 import sys
 
@@ -42,10 +44,17 @@ def crop_around(images, centre, size):
 
 
 def main():
-    build, out = sys.argv[1], sys.argv[2]
-    scene, light = (sys.argv[3], sys.argv[4]) if len(sys.argv) > 4 else ("glossy", "GlossDir")
-    data = os.path.join(build, "cycles_bench_set")
-    results = os.path.join(build, "render_table", "cycles_bench_set", "cycles")
+    parser = argparse.ArgumentParser(prog="cycles_pictures")
+    parser.add_argument("build")
+    parser.add_argument("out")
+    parser.add_argument("--small", action="store_true")
+    parser.add_argument("scene", nargs="?", default="glossy")
+    parser.add_argument("light", nargs="?", default="GlossDir")
+    args = parser.parse_args()
+    build, out, scene, light = args.build, args.out, args.scene, args.light
+    set_name = "cycles_set" if args.small else "cycles_bench_set"
+    data = os.path.join(build, set_name)
+    results = os.path.join(build, "render_table", set_name, "cycles")
     os.makedirs(out, exist_ok=True)
 
     raw, ref = rf.Image(f"{data}/dof_16.exr"), rf.Image(f"{data}/dof_ref.exr")
