@@ -151,11 +151,18 @@ def run_on_terminal(args, cwd):
     return proc.wait(timeout=300), shown.decode(errors="replace")
 
 
-def slow_frame(tmp_path):
-    """A 1024 x 512 frame whose --nlmeans 24 takes about 4 s (2 cores)."""
+def slow_frame(tmp_path, seconds=4.0):
+    """A frame whose --nlmeans 24 takes about `seconds`: a 256 x 128 trial
+    run is timed and the frame scaled from it (at most 1024 x 512, about 4 s
+    on 2 cores), so a sanitizer build is not given a frame 20x too slow."""
     rng = np.random.default_rng(3)
-    write_image(tmp_path / "big.exr", rng.random((512, 1024, 3), np.float32), BEAUTY)
-    return ["big.exr", "--nlmeans", 24, "-o", "clean.exr"]
+    write_image(tmp_path / "big.exr", rng.random((128, 256, 3), np.float32), BEAUTY)
+    args = ["big.exr", "--nlmeans", 24, "-o", "clean.exr"]
+    start = time.monotonic()
+    assert run(*args, cwd=tmp_path).code == 0
+    scale = min(4, max(1, round((seconds / (time.monotonic() - start)) ** 0.5)))
+    write_image(tmp_path / "big.exr", rng.random((128 * scale, 256 * scale, 3), np.float32), BEAUTY)
+    return args
 
 
 def test_progress_of_a_slow_command_on_a_terminal_only(tmp_path):
