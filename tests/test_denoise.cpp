@@ -251,25 +251,61 @@ double channel_sum(const ImageBuf& img, int c)
     return IBA::computePixelStats(img).sum[size_t(c)];
 }
 
-TEST(Denoise, GivesAFireflysExcessBackToItsNeighbourhood)
+TEST(Denoise, SpreadsAKnownFireflysExcessWide)
 {
-    // A flat 0.5 with one pixel 100x brighter: the clamp alone would take
-    // 98% of that pixel's energy (1.2% of the frame's); denoise gives it
-    // back and puts no blotch where the firefly was.
+    // A flat 0.5 with one pixel 100x brighter whose variance says it is a
+    // firefly: the clamp alone would take 98% of that pixel's energy (1.2%
+    // of the frame's); denoise gives it back and puts no blotch where the
+    // firefly was.
     ImageBuf img = IBA::fill({ 0.5f, 0.5f, 0.5f }, ROI(0, 64, 0, 64, 0, 1, 0, 3));
     const float bright[3] = { 50.0f, 50.0f, 50.0f };
     img.setpixel(30, 33, bright);
-    const ImageBuf out = mcdenoise::denoise(img);
+    ImageBuf variance = IBA::fill({ 1e-4f }, ROI(0, 64, 0, 64, 0, 1, 0, 1));
+    const float noisy[1] = { 1e4f };
+    variance.setpixel(30, 33, noisy);
+    mcdenoise::Guides g;
+    g.variance = &variance;
+    const ImageBuf out = mcdenoise::denoise(img, g);
     ASSERT_FALSE(out.has_error()) << out.geterror();
     const ImageBuf clamped = mcdenoise::clamp_fireflies(img, {}, 2.0f, 2);
-    // What is lost is the averaging's (nlmeans' weights are normalised per
-    // pixel, not per neighbour): measured 0.8% of what the clamp takes.
     for (int c = 0; c < 3; ++c) {
         const double taken = channel_sum(img, c) - channel_sum(clamped, c);
         EXPECT_GT(taken, 0.01 * channel_sum(img, c));
         EXPECT_NEAR(channel_sum(out, c), channel_sum(img, c), 0.02 * taken);
     }
     EXPECT_LT(IBA::computePixelStats(out).max[0], 1.0f);
+}
+
+TEST(Denoise, GivesAnUnjudgedOutliersExcessBackWithinItsOwnWindow)
+{
+    // No variance, no halves: a bright pixel on a noisy surface gives its
+    // excess to the pixels of its search window (radius 5) its average
+    // found alike, and to none beyond: the result equals that of the same
+    // image with the pixel already at the clamp's bound, plus the excess,
+    // inside the window only.
+    ImageBuf img = testimg::random_image(48, 40, 3, 12u, 0.4f, 0.6f);
+    const float bright[3] = { 50.0f, 40.0f, 30.0f };
+    img.setpixel(20, 17, bright);
+    const ImageBuf at_bound = [&] {
+        ImageBuf b = img;
+        std::vector<float> v(3);
+        mcdenoise::clamp_fireflies(img, {}, 2.0f, 2).getpixel(20, 17, v.data());
+        b.setpixel(20, 17, v.data());
+        return b;
+    }();
+    const ImageBuf out = mcdenoise::denoise(img), base = mcdenoise::denoise(at_bound);
+    ASSERT_FALSE(out.has_error() || base.has_error()) << out.geterror() << base.geterror();
+    double given = 0.0;
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 48; ++x) {
+            const double d = out.getchannel(x, y, 0, 0) - base.getchannel(x, y, 0, 0);
+            if (std::abs(x - 20) > 5 || std::abs(y - 17) > 5) {
+                ASSERT_EQ(d, 0.0) << x << "," << y;
+            }
+            given += d;
+        }
+    EXPECT_NEAR(given, 50.0 - at_bound.getchannel(20, 17, 0, 0), 1e-3);
+    EXPECT_LT(out.getchannel(20, 17, 0, 0), 25.0f);  // shared out, not kept
 }
 
 TEST(Denoise, KeepsAHighlightItsVarianceVouchesFor)

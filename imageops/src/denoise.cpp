@@ -6,6 +6,8 @@
 #include "denoise_frame.h"
 #include "energy_outliers.h"
 #include "feature_field.h"
+#include "layer_channels.h"
+#include "nlmeans_frames.h"
 #include "operation.h"
 #include "window.h"
 
@@ -116,13 +118,12 @@ bool check_denoise_guides(const char* op, ImageBuf& dst, const ImageBuf& beauty,
 
 ROI denoise_region(const ImageBuf& beauty, const ROI& roi)
 {
-    // Everything the nlmeans windows and patches read, the two 3x3 windows
-    // of an estimated variance, and the excess spread onto the ROI with the
-    // 3x3 windows of the variance that judges it, so the result does not
-    // depend on the ROI.
-    ROI region = grow_and_clip(
-        roi, std::max(denoise_search_radius + denoise_patch_radius, excess_spread_radius) + 2,
-        beauty.roi());
+    // The sources that give excess to the ROI (within the Gaussian's reach,
+    // or with their windows), their patches and the two 3x3 windows of an
+    // estimated variance, so the result does not depend on the ROI.
+    const int reach = std::max(excess_spread_radius,
+                               2 * denoise_search_radius + denoise_patch_radius);
+    ROI region      = grow_and_clip(roi, reach + 2, beauty.roi());
     region.chbegin = 0;
     region.chend   = beauty.nchannels();
     return region;
@@ -146,6 +147,7 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& 
         frame.guides.variance = &frame.variance;
         test_variance         = &pixel_variance;
     }
+    frame.outliers_measured = test_variance != nullptr;
     if (!split_outliers(op_name, dst, beauty, test_variance, firefly_factor,
                         firefly_radius, region, nthreads, frame.clamped, frame.excess,
                         scales))
@@ -160,19 +162,55 @@ bool prepare_denoise_frame(ImageBuf& dst, const ImageBuf& beauty, const Guides& 
     return true;
 }
 
+ExcessWeights firefly_sources(const DenoiseFrame& frame, const ROI& roi, const ROI& dw)
+{
+    if (frame.outliers_measured) {
+        ExcessWeights wide;
+        wide.wide        = true;
+        wide.data_window = dw;
+        return wide;
+    }
+    return excess_sources(frame.excess, grow_and_clip(roi, denoise_search_radius, dw),
+                          denoise_search_radius);
+}
+
+bool finish_firefly_weights(ImageBuf& dst, const DenoiseFrame& frame, const ROI& roi,
+                            const ROI& dw, int nthreads, ExcessWeights& weights)
+{
+    if (sources_outside(weights, roi)) {
+        const ROI window = grow_and_clip(roi, 2 * denoise_search_radius, dw);
+        FeatureInputs planes;
+        if (!load_feature_inputs(op_name, dst, frame.clamped, frame.guides,
+                                 denoise_feature_sigmas, window,
+                                 grow_and_clip(window, denoise_patch_radius, dw), nthreads, planes))
+            return false;
+        const NlmFrame own { &planes.colour,   &planes.variance, &planes.features,
+                             &planes.features, &planes.values,   nullptr,
+                             denoise_search_radius, true };
+        fill_outside(weights, roi, own, planes.colour, planes.variance, dw, denoise_patch_radius,
+                     frame.strength, nthreads);
+    }
+    normalise_weights(weights);
+    return true;
+}
+
 bool denoise(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, ROI roi, int nthreads)
 {
     if (!resolve_roi(op_name, dst, beauty, roi)
         || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
     DenoiseFrame frame;
-    if (!prepare_denoise_frame(dst, beauty, guides, denoise_region(beauty, roi),
-                               nthreads, frame)
-        || !nlmeans(dst, frame.clamped, frame.guides, denoise_search_radius,
-                    denoise_patch_radius, frame.strength, denoise_feature_sigmas, roi,
-                    nthreads))
+    if (!prepare_denoise_frame(dst, beauty, guides, denoise_region(beauty, roi), nthreads, frame))
         return false;
-    if (!give_back_excess(op_name, dst, frame.excess, roi, beauty.roi(),
+    ExcessWeights weights = firefly_sources(frame, roi, beauty.roi());
+    const WeightTap tap   = weight_tap(weights, roi);
+    std::vector<ImageBuf> no_layers;
+    if (!nlmeans_layers(dst, no_layers, frame.clamped, {}, {}, frame.guides,
+                        denoise_search_radius, denoise_patch_radius, frame.strength,
+                        denoise_feature_sigmas, roi, nthreads, &tap)
+        || !finish_firefly_weights(dst, frame, roi, beauty.roi(), nthreads, weights))
+        return false;
+    if (!give_back_excess(op_name, dst, weights, frame.excess, roi,
                           premultiplied_alpha(beauty), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));

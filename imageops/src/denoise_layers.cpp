@@ -102,17 +102,21 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     if (!prepare_denoise_frame(dst, beauty, guides, region, nthreads, frame, &scales)
         || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess))
         return false;
+    ExcessWeights weights = firefly_sources(frame, roi, beauty.roi());
+    const WeightTap tap   = weight_tap(weights, roi);
     // Into new images, so the excess can be added to float pixels in place.
     ImageBuf out;
     std::vector<ImageBuf> outs;
     if (!nlmeans_layers(out, outs, frame.clamped, layers, std::move(values), frame.guides,
                         denoise_search_radius, denoise_patch_radius, frame.strength,
-                        denoise_feature_sigmas, roi, nthreads)) {
+                        denoise_feature_sigmas, roi, nthreads, &tap)) {
         dst.errorfmt("{}", out.geterror());
         return false;
     }
+    if (!finish_firefly_weights(dst, frame, roi, beauty.roi(), nthreads, weights))
+        return false;
     Plane<float> factors;
-    if (!give_back_excess(op_name, out, frame.excess, roi, beauty.roi(),
+    if (!give_back_excess(op_name, out, weights, frame.excess, roi,
                           premultiplied_alpha(beauty), nthreads, &factors)) {
         dst.errorfmt("{}", out.geterror());
         return false;
@@ -120,7 +124,7 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
     out.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
     dst_layers.resize(layers.size());
     for (size_t i = 0; i < layers.size(); ++i) {
-        give_back_layer_excess(outs[i], excess[i], roi, beauty.roi(), factors, nthreads);
+        give_back_layer_excess(outs[i], weights, excess[i], roi, factors, nthreads);
         if (!put_result(dst, outs[i], roi, nthreads, dst_layers[i]))
             return false;
     }

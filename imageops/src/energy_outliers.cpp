@@ -1,5 +1,6 @@
-// energy_outliers.cpp: `denoise`'s energy-keeping outlier step: the firefly
-// excess taken out of the beauty, and spread back with a normalised Gaussian.
+// energy_outliers.cpp: `denoise`'s energy-keeping outlier step: highlights
+// told from fireflies, the firefly excess taken out of the beauty, and
+// given back over each firefly's own NL-means window.
 #include "energy_outliers.h"
 
 #include "feature_field.h"
@@ -171,13 +172,83 @@ void split_layer(const PixelBlock& in, const SplitScales& scales, const ROI& val
     });
 }
 
+ExcessWeights excess_sources(const Planes<float>& excess, const ROI& sources, int radius)
+{
+    ExcessWeights out;
+    out.radius = radius;
+    for (int y = sources.ybegin; y < sources.yend; ++y)
+        for (int x = sources.xbegin; x < sources.xend; ++x) {
+            const size_t i = excess.offset(x, y);
+            for (const auto& plane : excess.values)
+                if (plane[i] != 0.0f) {
+                    out.sources.push_back({ x, y });
+                    break;
+                }
+        }
+    out.weights.assign(out.sources.size() * window_size(out), 0.0f);
+    return out;
+}
+
+WeightTap weight_tap(ExcessWeights& weights, const ROI& roi)
+{
+    WeightTap tap { Plane<int32_t>(roi, -1), weights.weights.data() };
+    for (size_t k = 0; k < weights.sources.size(); ++k) {
+        const PixelXY p = weights.sources[k];
+        if (roi.contains(p.x, p.y))
+            tap.index.at(p.x, p.y) = int32_t(k);
+    }
+    return tap;
+}
+
+bool fill_outside(ExcessWeights& weights, const ROI& roi, const NlmFrame& frame,
+                  const ColourField& colour, const VarianceField& variance, const ROI& dw,
+                  int patch_radius, float strength, int nthreads)
+{
+    std::vector<PixelXY> outside;
+    std::vector<size_t> slots;
+    for (size_t k = 0; k < weights.sources.size(); ++k)
+        if (!roi.contains(weights.sources[k].x, weights.sources[k].y)) {
+            outside.push_back(weights.sources[k]);
+            slots.push_back(k);
+        }
+    if (outside.empty())
+        return false;
+    std::vector<float> w;
+    window_weights(frame, colour, variance, dw, patch_radius, strength, outside, nthreads, w);
+    const size_t count = window_size(weights);
+    for (size_t j = 0; j < slots.size(); ++j)
+        std::copy(w.begin() + std::ptrdiff_t(j * count), w.begin() + std::ptrdiff_t((j + 1) * count),
+                  weights.weights.begin() + std::ptrdiff_t(slots[j] * count));
+    return true;
+}
+
+bool sources_outside(const ExcessWeights& weights, const ROI& roi)
+{
+    return std::any_of(weights.sources.begin(), weights.sources.end(),
+                       [&](const PixelXY& p) { return !roi.contains(p.x, p.y); });
+}
+
+void normalise_weights(ExcessWeights& weights)
+{
+    const size_t count = window_size(weights);
+    for (size_t k = 0; k < weights.sources.size(); ++k) {
+        float* w   = weights.weights.data() + k * count;
+        double sum = 0.0;
+        for (size_t j = 0; j < count; ++j)
+            sum += w[j];
+        for (size_t j = 0; j < count; ++j)
+            w[j] = float(w[j] / sum);
+    }
+}
+
 namespace {
 
-/// The excess spread over `roi` (see `spread_excess`), handed out row by
-/// row: `sink(y, c, sum)` takes row y of channel c (the ROI's width of
-/// values) for each plane c that holds any excess.
+/// The excess spread over `roi` by the Gaussian of `excess_spread_sigma`
+/// normalised per source pixel over `data_window` (see `ExcessWeights::
+/// wide`), handed out row by row: `sink(y, c, sum)` takes row y of channel
+/// c (the ROI's width of values) for each plane c that holds any excess.
 template<class Sink>
-void spread_rows(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+void gaussian_rows(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
                  int nthreads, Sink&& sink)
 {
     const std::vector<float> g = spread_kernel();
@@ -260,9 +331,57 @@ void spread_rows(const Planes<float>& excess, const ROI& roi, const ROI& data_wi
     });
 }
 
+/// The excess given out over `roi` over each source's window (see
+/// `spread_excess`), row by row: `sink(y, c, sum)` takes row y of channel c
+/// (the ROI's width of values) for each plane c of `excess`, each source's
+/// terms added in the order of the sources.
+template<class Sink>
+void window_rows(const ExcessWeights& weights, const Planes<float>& excess, const ROI& roi,
+                 int nthreads, Sink&& sink)
+{
+    const int r        = weights.radius;
+    const int side     = 2 * r + 1;
+    const size_t count = size_t(side) * size_t(side);
+    const int nc       = excess.nchannels();
+    const std::vector<PixelXY>& sources = weights.sources;
+    parallel_rows(roi, nthreads, [&](int y) {
+        // The sources of rows y - r .. y + r, found by binary search.
+        const auto below = [](const PixelXY& s, int row) { return s.y < row; };
+        const auto first = std::lower_bound(sources.begin(), sources.end(), y - r, below);
+        const auto last  = std::lower_bound(first, sources.end(), y + r + 1, below);
+        std::vector<float> sum(size_t(roi.width()));
+        for (int c = 0; c < nc; ++c) {
+            std::fill(sum.begin(), sum.end(), 0.0f);
+            for (auto s = first; s != last; ++s) {
+                const float e = excess.values[size_t(c)][excess.offset(s->x, s->y)];
+                if (e == 0.0f)
+                    continue;
+                const float* w = weights.weights.data() + size_t(s - sources.begin()) * count
+                                 + size_t(y - s->y + r) * size_t(side);
+                const Span span = clip_window(s->x, r, roi.xbegin, roi.xend);
+                for (int x = span.begin; x < span.end; ++x)
+                    sum[size_t(x - roi.xbegin)] += e * w[x - s->x + r];
+            }
+            sink(y, c, sum.data());
+        }
+    });
+}
+
+/// The excess given out over `roi` as `weights` says, row by row (see
+/// `gaussian_rows` and `window_rows`).
+template<class Sink>
+void spread_rows(const ExcessWeights& weights, const Planes<float>& excess, const ROI& roi,
+                 int nthreads, Sink&& sink)
+{
+    if (weights.wide)
+        gaussian_rows(excess, roi, weights.data_window, nthreads, sink);
+    else
+        window_rows(weights, excess, roi, nthreads, sink);
+}
+
 }  // namespace
 
-ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& data_window,
+ImageBuf spread_excess(const ExcessWeights& weights, const Planes<float>& excess, const ROI& roi,
                        int nchannels, int nthreads)
 {
     ROI full     = roi;
@@ -270,7 +389,7 @@ ImageBuf spread_excess(const Planes<float>& excess, const ROI& roi, const ROI& d
     full.chend   = nchannels;
     ImageBuf spread(OIIO::ImageSpec(full, OIIO::TypeDesc::FLOAT));
     OIIO::ImageBufAlgo::zero(spread);
-    spread_rows(excess, roi, data_window, nthreads, [&](int y, int c, const float* sum) {
+    spread_rows(weights, excess, roi, nthreads, [&](int y, int c, const float* sum) {
         for (int x = roi.xbegin; x < roi.xend; ++x)
             static_cast<float*>(spread.pixeladdr(x, y))[c] = sum[x - roi.xbegin];
     });
@@ -319,11 +438,11 @@ void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha
 
 }  // namespace
 
-bool give_back_excess(const char* op, ImageBuf& dst, const Planes<float>& excess,
-                      const ROI& roi, const ROI& data_window, int alpha_channel, int nthreads,
-                      Plane<float>* factors)
+bool give_back_excess(const char* op, ImageBuf& dst, const ExcessWeights& weights,
+                      const Planes<float>& excess, const ROI& roi, int alpha_channel,
+                      int nthreads, Plane<float>* factors)
 {
-    const ImageBuf spread = spread_excess(excess, roi, data_window, dst.nchannels(), nthreads);
+    const ImageBuf spread = spread_excess(weights, excess, roi, dst.nchannels(), nthreads);
     if (factors)
         *factors = Plane<float>(roi);
     if (dst.spec().format == OIIO::TypeDesc::FLOAT && dst.localpixels()) {
@@ -343,11 +462,12 @@ bool give_back_excess(const char* op, ImageBuf& dst, const Planes<float>& excess
     return true;
 }
 
-void give_back_layer_excess(ImageBuf& dst, const Planes<float>& excess, const ROI& roi,
-                            const ROI& data_window, const Plane<float>& factors, int nthreads)
+void give_back_layer_excess(ImageBuf& dst, const ExcessWeights& weights,
+                            const Planes<float>& excess, const ROI& roi,
+                            const Plane<float>& factors, int nthreads)
 {
     const std::ptrdiff_t stride = dst.pixel_stride() / std::ptrdiff_t(sizeof(float));
-    spread_rows(excess, roi, data_window, nthreads, [&](int y, int c, const float* sum) {
+    spread_rows(weights, excess, roi, nthreads, [&](int y, int c, const float* sum) {
         float* out      = static_cast<float*>(dst.pixeladdr(roi.xbegin, y, 0, c));
         const float* f  = factors.from(roi.xbegin, y);
         for (int i = 0; i < roi.width(); ++i)

@@ -16,6 +16,8 @@
 #include <OpenImageIO/imagebufalgo_util.h>
 #include <OpenImageIO/simd.h>
 
+#include <algorithm>
+
 namespace mcdenoise {
 
 using OIIO::ImageBuf;
@@ -77,13 +79,28 @@ inline int patch_count(int p, int d, int f, int lo, int hi)
     return b - a + 1;
 }
 
+// The rows `frame_chunk` works in, kept from call to call.
+struct ChunkScratch {
+    std::vector<float> dist, column, e, w, cx;
+
+    // Sized for distance rows of `pw` by `ph` and `n` pixels a row.
+    void size(int pw, int ph, int n)
+    {
+        dist.resize(size_t(pw) * size_t(ph));
+        column.resize(size_t(pw));
+        e.resize(size_t(n));
+        w.resize(size_t(n));
+        cx.resize(size_t(n));
+    }
+};
+
 // The weights of frame `q`'s window for rows [y0, y1), columns
 // [x0, x0 + n) of the ROI, offset by offset: `sink(y, w, dx, dy, i0, i1)`
 // takes the weights w[i], i in [i0, i1), of the pixels (x0 + i, y) for
 // their neighbours (x0 + i + dx, y + dy).
 template<class Sink>
 void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0, int n,
-                 Sink&& sink)
+                 ChunkScratch& scratch, Sink&& sink)
 {
     const ROI& dw     = in.dw;
     const int r = q.search_radius, f = in.f;
@@ -91,8 +108,12 @@ void frame_chunk(const NlmInputs& in, const NlmFrame& q, int y0, int y1, int x0,
     const int ph = (y1 - y0) + 2 * f;  // rows from y0 - f
     const int nc = in.colour.nchannels();
     const float channel_mean = 1.0f / float(nc);
-    std::vector<float> dist(static_cast<size_t>(pw) * ph), column(static_cast<size_t>(pw)),
-        e(static_cast<size_t>(n)), w(static_cast<size_t>(n)), cx(static_cast<size_t>(n));
+    scratch.size(pw, ph, n);
+    std::vector<float>& dist = scratch.dist;
+    std::vector<float>& column = scratch.column;
+    std::vector<float>& e = scratch.e;
+    std::vector<float>& w = scratch.w;
+    std::vector<float>& cx = scratch.cx;
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
             for (int i = 0; i < n; ++i)
@@ -201,9 +222,23 @@ int value_end(const NlmTarget& target)
     return target.value_begin + target.result->roi.nchannels();
 }
 
-// Rows [y0, y1), columns [x0, x0 + n) of the ROI, into every target.
+// Whether `tap` names any pixel of rows [y0, y1), columns [x0, x0 + n).
+bool taps_chunk(const WeightTap* tap, int y0, int y1, int x0, int n)
+{
+    if (!tap)
+        return false;
+    for (int y = y0; y < y1; ++y) {
+        const int32_t* k = tap->index.from(x0, y);
+        if (std::any_of(k, k + n, [](int32_t v) { return v >= 0; }))
+            return true;
+    }
+    return false;
+}
+
+// Rows [y0, y1), columns [x0, x0 + n) of the ROI, into every target; the
+// own frame's weights of the pixels `tap` names, into it.
 void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n,
-                   const std::vector<NlmTarget>& targets)
+                   const std::vector<NlmTarget>& targets, const WeightTap* tap)
 {
     int c0 = targets.front().value_begin, c1 = value_end(targets.front());
     for (const NlmTarget& t : targets) {
@@ -213,15 +248,26 @@ void nlmeans_chunk(const NlmInputs& in, int y0, int y1, int x0, int n,
     std::vector<WeightedSums> sums;
     for (int y = y0; y < y1; ++y)
         sums.emplace_back(c0, c1, n, in.frames.front().values->masked());
+    ChunkScratch scratch;
+    const bool tapped = taps_chunk(tap, y0, y1, x0, n);
     for (const NlmFrame& q : in.frames) {
         WeightBatch batch(y1 - y0, 2 * q.search_radius + 1, n);
         int batch_dy = q.search_radius + 1;
-        frame_chunk(in, q, y0, y1, x0, n,
+        const int side = 2 * q.search_radius + 1;
+        frame_chunk(in, q, y0, y1, x0, n, scratch,
                     [&](int y, const float* w, int dx, int dy, int i0, int i1) {
                         if (dy != batch_dy)
                             batch.flush(sums, *q.values);
                         batch_dy = dy;
                         batch.put(y - y0, w, x0 + dx, y + dy, i0, i1);
+                        if (!tapped || !q.own)
+                            return;
+                        const int32_t* k = tap->index.from(x0, y);
+                        const size_t at  = size_t(dy + q.search_radius) * size_t(side)
+                                          + size_t(dx + q.search_radius);
+                        for (int i = i0; i < i1; ++i)
+                            if (k[i] >= 0)
+                                tap->weights[size_t(k[i]) * size_t(side) * size_t(side) + at] = w[i];
                     });
         batch.flush(sums, *q.values);
     }
@@ -311,7 +357,7 @@ bool nlmeans(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, int se
 bool nlmeans_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
                     const std::vector<const ImageBuf*>& layers, std::vector<SumSource>&& values,
                     const Guides& guides, int search_radius, int patch_radius, float strength,
-                    const FeatureSigmas& sigmas, ROI roi, int nthreads)
+                    const FeatureSigmas& sigmas, ROI roi, int nthreads, const WeightTap* tap)
 {
     const char* op = "nlmeans";
     FeatureInputs fin;
@@ -340,7 +386,7 @@ bool nlmeans_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
         append_values(fin.values, std::move(values[i]));
     }
     nlmeans_frames(own_frame(fin, search_radius), fin.colour, fin.variance, beauty.roi(),
-                   patch_radius, strength, nthreads, targets);
+                   patch_radius, strength, nthreads, targets, tap);
     for (size_t i = 0; i < layers.size(); ++i)
         if (!finish_result(op, dst_layers[i], results[i + 1])) {
             dst.errorfmt("{}", dst_layers[i].geterror());
@@ -359,7 +405,8 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
 
 void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colour,
                     const VarianceField& variance, const ROI& dw, int patch_radius,
-                    float strength, int nthreads, const std::vector<NlmTarget>& targets)
+                    float strength, int nthreads, const std::vector<NlmTarget>& targets,
+                    const WeightTap* tap)
 {
     const ROI& roi = targets.front().result->roi;
     const NlmInputs in { frames, colour, variance, dw, patch_radius, strength * strength };
@@ -367,7 +414,8 @@ void nlmeans_frames(const std::vector<NlmFrame>& frames, const ColourField& colo
         const FlushDenormals flush;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
-                nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, targets);
+                nlmeans_chunk(in, y, std::min(strip.yend, y + chunk_rows), x0, n, targets,
+                              tap);
             });
     });
 }
@@ -385,13 +433,40 @@ void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceF
     std::fill(w.values.begin(), w.values.end(), 0.0f);
     OIIO::ImageBufAlgo::parallel_image(region, nthreads, [&](ROI strip) {
         const FlushDenormals flush;
+        ChunkScratch scratch;
         for (int y = strip.ybegin; y < strip.yend; y += chunk_rows)
             for_each_segment(strip.xbegin, strip.xend, [&](int x0, int n) {
-                frame_chunk(in, at_pixel, y, std::min(strip.yend, y + chunk_rows), x0, n,
+                frame_chunk(in, at_pixel, y, std::min(strip.yend, y + chunk_rows), x0, n, scratch,
                             [&](int row, const float* wr, int, int, int i0, int i1) {
                                 std::copy(wr + i0, wr + i1, w.from(x0 + i0, row));
                             });
             });
+    });
+}
+
+void window_weights(const NlmFrame& frame, const ColourField& colour,
+                    const VarianceField& variance, const ROI& dw, int patch_radius,
+                    float strength, const std::vector<PixelXY>& pixels, int nthreads,
+                    std::vector<float>& weights)
+{
+    const int side     = 2 * frame.search_radius + 1;
+    const size_t count = size_t(side) * size_t(side);
+    weights.assign(pixels.size() * count, 0.0f);
+    const std::vector<NlmFrame> frames { frame };
+    const NlmInputs in { frames, colour, variance, dw, patch_radius, strength * strength };
+    OIIO::ImageBufAlgo::parallel_image(ROI(0, int(pixels.size()), 0, 1), nthreads, [&](ROI part) {
+        const FlushDenormals flush;
+        ChunkScratch scratch;
+        for (int k = part.xbegin; k < part.xend; ++k) {
+            const PixelXY p = pixels[size_t(k)];
+            float* out      = weights.data() + size_t(k) * count;
+            frame_chunk(in, frame, p.y, p.y + 1, p.x, 1, scratch,
+                        [&](int, const float* w, int dx, int dy, int i0, int i1) {
+                            if (i0 < i1)
+                                out[size_t(dy + frame.search_radius) * size_t(side)
+                                    + size_t(dx + frame.search_radius)] = w[0];
+                        });
+        }
     });
 }
 

@@ -58,4 +58,31 @@ void match_weights(const NlmFrame& q, const ColourField& colour, const VarianceF
                    const OIIO::ROI& dw, int patch_radius, float strength, int nthreads,
                    Plane<float>& w);
 
+/// A pixel's coordinates.
+struct PixelXY {
+    int x, y;
+};
+
+/// Where `nlmeans_frames` also copies the weights the filtered frame's own
+/// window gives some of the pixels it filters: `index` over a region
+/// holding the ROI (k >= 0 for the k-th such pixel, -1 for the others),
+/// and for pixel k and offset (dx, dy) the weight goes to `weights[k *
+/// side^2 + (dy + r) * side + dx + r]` (r: the own frame's search radius,
+/// side = 2 r + 1), as `window_weights` lays them out.
+struct WeightTap {
+    Plane<int32_t> index;
+    float* weights = nullptr;
+};
+
+/// The weights `nlmeans_frames` gives the pixels of `frame`'s window when
+/// it filters each pixel of `pixels` (inside `dw`) with that one window:
+/// for pixel k and offset (dx, dy), `weights[k * side^2 + (dy + r) * side
+/// + dx + r]` (r: the frame's search radius, side = 2 r + 1), 0 for
+/// offsets outside `dw`. `colour`, `variance` and the frame's planes must
+/// cover the pixels' windows and patches.
+void window_weights(const NlmFrame& frame, const ColourField& colour,
+                    const VarianceField& variance, const OIIO::ROI& dw, int patch_radius,
+                    float strength, const std::vector<PixelXY>& pixels, int nthreads,
+                    std::vector<float>& weights);
+
 }  // namespace mcdenoise

@@ -195,6 +195,25 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
     return finish_result(op_name, dst, total);
 }
 
+// Where the excess of the centre's outliers goes when `roi` is filtered:
+// spread wide (known fireflies), or over each one's own window of the
+// centre frame's planes (the window a single-frame `denoise` would use).
+ExcessWeights centre_firefly_weights(const PreparedFrameData& centre, const ROI& roi,
+                                     int nthreads)
+{
+    const ROI& dw = centre.input.beauty->roi();
+    ExcessWeights weights = firefly_sources(centre.frame, roi, dw);
+    if (weights.wide)
+        return weights;
+    const FeatureInputs& p = centre.planes;
+    const NlmFrame own { &p.colour, &p.variance, &p.features, &p.features, &p.values, nullptr,
+                         denoise_search_radius, true };
+    fill_outside(weights, ROI(0, 0, 0, 0), own, p.colour, p.variance, dw, denoise_patch_radius,
+                 centre.frame.strength, nthreads);
+    normalise_weights(weights);
+    return weights;
+}
+
 // A prepared frame's data, or an error naming it (`what`).
 const PreparedFrameData* prepared_data(ImageBuf& dst, const PreparedFrame& f,
                                        const std::string& what)
@@ -232,8 +251,8 @@ bool denoise(ImageBuf& dst, const PreparedFrame& centre,
     if (!resolve_roi(op_name, dst, beauty, roi))
         return false;
     if (!average_frames(dst, *c, ns, offsets, roi, nthreads)
-        || !give_back_excess(op_name, dst, c->frame.excess, roi, beauty.roi(),
-                             premultiplied_alpha(beauty), nthreads))
+        || !give_back_excess(op_name, dst, centre_firefly_weights(*c, roi, nthreads),
+                             c->frame.excess, roi, premultiplied_alpha(beauty), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(ns.size()) + 1);
     return true;

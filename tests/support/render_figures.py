@@ -124,6 +124,10 @@ class Mcdtool:
         self.binary = binary
         self.work = work
         os.makedirs(work, exist_ok=True)
+        # A result older than the build is made again.
+        lib = os.path.join(os.path.dirname(binary), "..", "lib")
+        built = [binary] + [os.path.join(lib, n) for n in os.listdir(lib)] if os.path.isdir(lib) else [binary]
+        self.built = max(os.path.getmtime(f) for f in built)
 
     def run(self, *args):
         done = subprocess.run([self.binary, *args], capture_output=True, text=True)
@@ -134,7 +138,7 @@ class Mcdtool:
     def result(self, name, source, *commands):
         """`mcdtool SOURCE COMMANDS -o WORK/NAME.exr` (once); the output."""
         out = os.path.join(self.work, name + ".exr")
-        if not os.path.exists(out) or os.path.getmtime(out) < os.path.getmtime(source):
+        if not os.path.exists(out) or os.path.getmtime(out) < max(os.path.getmtime(source), self.built):
             self.run(source, *commands, "-o", out)
         return Image(out)
 

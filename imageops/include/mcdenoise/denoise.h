@@ -21,15 +21,23 @@ MCDENOISE_API_BEGIN
 ///    variance-normalised patch distances (Rousselle, Knaus & Zwicker 2012)
 ///    and feature weights (Rousselle, Manzi & Zwicker 2013) with fall-offs
 ///    `denoise_feature_sigmas`.
-/// 3. The excess is given back: spread over its neighbourhood with a
-///    Gaussian of standard deviation 10 pixels (radius 30), normalised per
-///    source pixel over the data window, so the frame keeps a firefly's
-///    energy without a blotch where it was. The per-pixel split applies to
-///    the colour channels; further channels (alpha) are filtered as they
-///    are. With an alpha channel (`spec().alpha_channel`, else a fourth
-///    channel), the excess a pixel receives is scaled down where it would
-///    lift a colour channel above alpha, so premultiplied colour stays
-///    <= alpha where it was.
+/// 3. The excess is given back, so the frame keeps its energy. With a
+///    measured noise the pixels that gave excess are known fireflies: their
+///    excess is spread over the neighbourhood with a Gaussian of standard
+///    deviation 10 pixels (radius 30), normalised per source pixel over the
+///    data window, a faint wide glow rather than a blotch. Without one
+///    (Cycles writes neither a variance nor halves), each pixel's excess is
+///    shared out over its own search window in proportion to the weights
+///    `nlmeans` gave that window when it filtered the pixel, normalised to
+///    sum 1: an outlier on a surface gives its excess to the pixels alike
+///    to it, never further than 5 pixels; one unlike its surroundings (a
+///    glint, a small emitter) gets its own excess back, so the result backs
+///    off towards the input there instead of inventing a glow. The
+///    per-pixel split applies to the colour channels; further channels
+///    (alpha) are filtered as they are. With an alpha channel
+///    (`spec().alpha_channel`, else a fourth channel), the excess a pixel
+///    receives is scaled down where it would lift a colour channel above
+///    alpha, so premultiplied colour stays <= alpha where it was.
 ///
 /// What each guide buys (relMSE per guide set: docs/quality.md):
 /// - `variance`: the noise level of every pixel, so the colour distance
