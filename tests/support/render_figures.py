@@ -135,10 +135,14 @@ class Mcdtool:
             raise RuntimeError(f"mcdtool {' '.join(args)} failed:\n{done.stderr}")
         return done.stderr
 
+    def fresh(self, out, source):
+        """Whether `out` exists and is newer than `source` and the build."""
+        return os.path.exists(out) and os.path.getmtime(out) >= max(os.path.getmtime(source), self.built)
+
     def result(self, name, source, *commands):
         """`mcdtool SOURCE COMMANDS -o WORK/NAME.exr` (once); the output."""
         out = os.path.join(self.work, name + ".exr")
-        if not os.path.exists(out) or os.path.getmtime(out) < max(os.path.getmtime(source), self.built):
+        if not self.fresh(out, source):
             self.run(source, *commands, "-o", out)
         return Image(out)
 
@@ -212,7 +216,7 @@ def shot_figures(tool, folder, shot, baseline_binary=None):
                  for f in cfg["frames"]}
     pattern = os.path.join(tool.work, f"{shot}_temporal_f@.exr")
     temporal_path = lambda f: pattern.replace("@", str(f))  # noqa: E731
-    if not all(os.path.exists(temporal_path(f)) for f in cfg["evaluated"]):
+    if not all(tool.fresh(temporal_path(f), frame_path(f)) for f in cfg["evaluated"]):
         frames = f"{cfg['evaluated'][0]}-{cfg['evaluated'][-1]}"
         tool.run(os.path.join(folder, f"{shot}_16_f@.exr"), "--frames", frames, "--denoise",
                  "--temporal", str(cfg["n"]), "-o", pattern)
