@@ -200,7 +200,7 @@ WeightTap weight_tap(ExcessWeights& weights, const ROI& roi)
     return tap;
 }
 
-bool fill_outside(ExcessWeights& weights, const ROI& roi, const NlmFrame& frame,
+void fill_outside(ExcessWeights& weights, const ROI& roi, const NlmFrame& frame,
                   const ColourField& colour, const VarianceField& variance, const ROI& dw,
                   int patch_radius, float strength, int nthreads)
 {
@@ -212,14 +212,13 @@ bool fill_outside(ExcessWeights& weights, const ROI& roi, const NlmFrame& frame,
             slots.push_back(k);
         }
     if (outside.empty())
-        return false;
+        return;
     std::vector<float> w;
     window_weights(frame, colour, variance, dw, patch_radius, strength, outside, nthreads, w);
     const size_t count = window_size(weights);
     for (size_t j = 0; j < slots.size(); ++j)
         std::copy(w.begin() + std::ptrdiff_t(j * count), w.begin() + std::ptrdiff_t((j + 1) * count),
                   weights.weights.begin() + std::ptrdiff_t(slots[j] * count));
-    return true;
 }
 
 bool sources_outside(const ExcessWeights& weights, const ROI& roi)

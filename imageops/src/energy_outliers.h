@@ -107,8 +107,8 @@ bool sources_outside(const ExcessWeights& weights, const OIIO::ROI& roi);
 /// Fill the weights of the sources outside `roi` with `window_weights` of
 /// `frame` (its search radius `weights.radius`) compared with `colour`,
 /// `variance`, `dw`, `patch_radius` and `strength`: the weights the
-/// average would have given them. Returns whether there were any.
-bool fill_outside(ExcessWeights& weights, const OIIO::ROI& roi, const NlmFrame& frame,
+/// average would have given them.
+void fill_outside(ExcessWeights& weights, const OIIO::ROI& roi, const NlmFrame& frame,
                   const ColourField& colour, const VarianceField& variance,
                   const OIIO::ROI& dw, int patch_radius, float strength, int nthreads);
 
