@@ -395,6 +395,16 @@ ImageBuf spread_excess(const ExcessWeights& weights, const Planes<float>& excess
     return spread;
 }
 
+Planes<float> spread_excess_planes(const ExcessWeights& weights, const Planes<float>& excess,
+                                   const ROI& roi, int nthreads)
+{
+    Planes<float> spread(roi, excess.nchannels(), 0.0f);
+    spread_rows(weights, excess, roi, nthreads, [&](int y, int c, const float* sum) {
+        std::copy_n(sum, roi.width(), spread.row(c, y));
+    });
+    return spread;
+}
+
 int premultiplied_alpha(const ImageBuf& beauty)
 {
     const int given = beauty.spec().alpha_channel;
@@ -437,11 +447,9 @@ void add_spread(ImageBuf& sum, const ImageBuf& spread, const ROI& roi, int alpha
 
 }  // namespace
 
-bool give_back_excess(const char* op, ImageBuf& dst, const ExcessWeights& weights,
-                      const Planes<float>& excess, const ROI& roi, int alpha_channel,
-                      int nthreads, Plane<float>* factors)
+bool give_back_spread(const char* op, ImageBuf& dst, const ImageBuf& spread, const ROI& roi,
+                      int alpha_channel, int nthreads, Plane<float>* factors)
 {
-    const ImageBuf spread = spread_excess(weights, excess, roi, dst.nchannels(), nthreads);
     if (factors)
         *factors = Plane<float>(roi);
     if (dst.spec().format == OIIO::TypeDesc::FLOAT && dst.localpixels()) {
@@ -459,6 +467,14 @@ bool give_back_excess(const char* op, ImageBuf& dst, const ExcessWeights& weight
         return false;
     }
     return true;
+}
+
+bool give_back_excess(const char* op, ImageBuf& dst, const ExcessWeights& weights,
+                      const Planes<float>& excess, const ROI& roi, int alpha_channel,
+                      int nthreads, Plane<float>* factors)
+{
+    return give_back_spread(op, dst, spread_excess(weights, excess, roi, dst.nchannels(), nthreads),
+                            roi, alpha_channel, nthreads, factors);
 }
 
 void give_back_layer_excess(ImageBuf& dst, const ExcessWeights& weights,

@@ -126,6 +126,10 @@ void normalise_weights(ExcessWeights& weights);
 OIIO::ImageBuf spread_excess(const ExcessWeights& weights, const Planes<float>& excess,
                              const OIIO::ROI& roi, int nchannels, int nthreads);
 
+/// `spread_excess` over `roi` as planes, one per plane of `excess`.
+Planes<float> spread_excess_planes(const ExcessWeights& weights, const Planes<float>& excess,
+                                   const OIIO::ROI& roi, int nthreads);
+
 /// The alpha channel `give_back_excess` keeps the colour of `beauty` under:
 /// its `spec().alpha_channel` when set, else channel 3 when the beauty has
 /// channels beyond the colour, else -1.
@@ -141,6 +145,12 @@ int premultiplied_alpha(const OIIO::ImageBuf& beauty);
 bool give_back_excess(const char* op, OIIO::ImageBuf& dst, const ExcessWeights& weights,
                       const Planes<float>& excess, const OIIO::ROI& roi, int alpha_channel,
                       int nthreads, Plane<float>* factors = nullptr);
+
+/// `give_back_excess` of an excess already given out: `spread`, a float
+/// image with `dst`'s channels covering `roi`.
+bool give_back_spread(const char* op, OIIO::ImageBuf& dst, const OIIO::ImageBuf& spread,
+                      const OIIO::ROI& roi, int alpha_channel, int nthreads,
+                      Plane<float>* factors = nullptr);
 
 /// Add a layer's excess given out (`spread_excess`) times `factors` (the
 /// beauty's, from `give_back_excess`) to `dst`, a float image with local

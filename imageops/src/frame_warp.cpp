@@ -206,7 +206,8 @@ Planes<float> warp_planes(const Planes<float>& src, const WarpMap& map, const RO
     return out;
 }
 
-CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
+CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
+                         const ROI& source_dw,
                          const std::vector<const GuideChannels*>& steps, int offset,
                          const CarryRegions& regions, int nthreads)
 {
@@ -215,7 +216,7 @@ CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
                        { planes_like(src.variance.colour, regions.variance), Plane<float>() },
                        { Planes<float>(regions.window, src.features.dims.nchannels()), IdPlane() },
                        planes_like(src.values, regions.window),
-                       Plane<float>(regions.window) };
+                       Plane<float>(regions.window), planes_like(excess, regions.window) };
     const bool ids = !src.features.ids.values.empty();
     if (ids)
         out.features.ids = IdPlane(regions.window);
@@ -237,6 +238,7 @@ CarriedFrame carry_frame(const FeatureInputs& src, const ROI& source_dw,
             const Taps sharp = cubic_taps(s, source_dw);
             sample(src.values.values, out.values.values, o, sharp, false);
             sample(src.values.finite, out.values.finite, o, sharp, false);
+            sample(excess.values, out.excess.values, o, sharp, false);
             const size_t q = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
             for (size_t d = 0; d < out.features.dims.values.size(); ++d)
                 out.features.dims.values[d][o] = s.ok ? src.features.dims.values[d][q] : 0.0f;

@@ -72,6 +72,7 @@ struct CarriedFrame {
     FeatureField features;  ///< over the window
     Planes<float> values;   ///< every channel and its finite mask, over the window
     Plane<float> usable;    ///< over the window: 1 where the pixel has a source, else 0
+    Planes<float> excess;   ///< the frame's excess given out, over the window
 };
 
 /// Carry `src` (the planes of the frame `offset` frames from the centre,
@@ -86,8 +87,11 @@ struct CarriedFrame {
 /// features and ids from the nearest source pixel; 0 (ids: an id equal to
 /// no other) where there is no source. The patches are compared on the
 /// smoother bilinear colour (less noise, better matches); what is averaged
-/// keeps the detail bilinear sampling blurs.
-CarriedFrame carry_frame(const FeatureInputs& src, const OIIO::ROI& source_dw,
+/// keeps the detail bilinear sampling blurs. `excess` (planes over
+/// `source_dw`: the frame's outliers' excess as its own `denoise` gives it
+/// out) is carried as the values are.
+CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
+                         const OIIO::ROI& source_dw,
                          const std::vector<const GuideChannels*>& steps, int offset,
                          const CarryRegions& regions, int nthreads);
 

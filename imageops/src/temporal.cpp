@@ -106,7 +106,8 @@ void carry_neighbours(const PreparedFrameData& centre,
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
     for (size_t i : order)
-        carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->input.beauty->roi(),
+        carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->given_excess,
+                                      neighbours[i]->input.beauty->roi(),
                                       motion_steps(motions, offsets, offsets[i]), offsets[i], r,
                                       nthreads));
 }
@@ -135,11 +136,37 @@ const SumSource& align_masks(const SumSource& centre, const ROI& window,
     return centre_copy;
 }
 
+// The excess given back to `band`: at each pixel the mean of every
+// frame's excess given out there (the centre's, `centre`, and the carried
+// neighbours'), each neighbour weighed as the temporal guide weighs it
+// (`guide`; the centre 1), so a firefly's energy is shared among the
+// frames that show the same thing there, as its noise is; into `out` (a
+// float image over the ROI).
+void shot_excess(const Planes<float>& centre, const std::vector<CarriedFrame>& carried,
+                 const TemporalGuide& guide, const ROI& band, int nthreads, ImageBuf& out)
+{
+    parallel_rows(band, nthreads, [&](int y) {
+        for (int x = band.xbegin; x < band.xend; ++x) {
+            float total = 1.0f;
+            for (const Plane<float>& w : guide.weights)
+                total += w.at(x, y);
+            float* given = static_cast<float*>(out.pixeladdr(x, y));
+            for (int c = 0; c < centre.nchannels(); ++c) {
+                float sum = *centre.from(c, x, y);
+                for (size_t k = 0; k < carried.size(); ++k)
+                    sum += guide.weights[k].at(x, y) * *carried[k].excess.from(c, x, y);
+                given[c] = sum / total;
+            }
+        }
+    });
+}
+
 // The temporal guide, then the NL-means average of `band` over the
 // centre's window and the neighbours' (`carried`, over the band's
-// regions), into `result`.
+// regions), into `result`, and the excess the shot gives back to the band
+// into `excess`.
 void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& carried,
-                  const ROI& band, int nthreads, ResultPixels& result)
+                  const ROI& band, int nthreads, ResultPixels& result, ImageBuf& excess)
 {
     const FeatureInputs& c = centre.planes;
     const ROI dw           = centre.frame.clamped.roi();
@@ -162,14 +189,17 @@ void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& ca
         f.centre_features = &guide.features;
     nlmeans_frames(frames, guide.colour, guide.variance, dw, denoise_patch_radius, strength,
                    nthreads, result);
+    shot_excess(centre.given_excess, carried, guide, band, nthreads, excess);
 }
 
-// The average of `roi` into `dst`, band by band of `band_rows` rows: the
-// neighbours are carried into the regions of one band at a time, so their
-// planes stay small and their memory is reused from band to band.
+// The average of `roi` into `dst` and the excess the shot gives back to it
+// into `excess` (a float image over the ROI), band by band of `band_rows`
+// rows: the neighbours are carried into the regions of one band at a time,
+// so their planes stay small and their memory is reused from band to band.
 bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
                     const std::vector<const PreparedFrameData*>& neighbours,
-                    const std::vector<int>& offsets, const ROI& roi, int nthreads)
+                    const std::vector<int>& offsets, const ROI& roi, int nthreads,
+                    ImageBuf& excess)
 {
     const ImageBuf& clamped = centre.frame.clamped;
     const auto inputs       = { centre.input.beauty, &clamped };
@@ -187,31 +217,12 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
         ResultPixels part;
         if (!begin_result(op_name, dst, clamped, inputs, band, part))
             return false;
-        average_band(centre, carried, band, nthreads, part);
+        average_band(centre, carried, band, nthreads, part, excess);
         if (!finish_result(op_name, dst, part))
             return false;
         total.empty_windows += part.empty_windows;
     }
     return finish_result(op_name, dst, total);
-}
-
-// Where the excess of the centre's outliers goes when `roi` is filtered:
-// spread wide (known fireflies), or over each one's own window of the
-// centre frame's planes (the window a single-frame `denoise` would use).
-ExcessWeights centre_firefly_weights(const PreparedFrameData& centre, const ROI& roi,
-                                     int nthreads)
-{
-    const ROI& dw = centre.input.beauty->roi();
-    ExcessWeights weights = firefly_sources(centre.frame, roi, dw);
-    if (weights.wide)
-        return weights;
-    const FeatureInputs& p = centre.planes;
-    const NlmFrame own { &p.colour, &p.variance, &p.features, &p.features, &p.values, nullptr,
-                         denoise_search_radius, true };
-    fill_outside(weights, ROI(0, 0, 0, 0), own, p.colour, p.variance, dw, denoise_patch_radius,
-                 centre.frame.strength, nthreads);
-    normalise_weights(weights);
-    return weights;
 }
 
 // A prepared frame's data, or an error naming it (`what`).
@@ -250,9 +261,12 @@ bool denoise(ImageBuf& dst, const PreparedFrame& centre,
         return denoise(dst, beauty, c->input.guides, roi, nthreads);
     if (!resolve_roi(op_name, dst, beauty, roi))
         return false;
-    if (!average_frames(dst, *c, ns, offsets, roi, nthreads)
-        || !give_back_excess(op_name, dst, centre_firefly_weights(*c, roi, nthreads),
-                             c->frame.excess, roi, premultiplied_alpha(beauty), nthreads))
+    ROI all     = roi;
+    all.chbegin = 0;
+    all.chend   = beauty.nchannels();
+    ImageBuf excess(OIIO::ImageSpec(all, OIIO::TypeDesc::FLOAT));
+    if (!average_frames(dst, *c, ns, offsets, roi, nthreads, excess)
+        || !give_back_spread(op_name, dst, excess, roi, premultiplied_alpha(beauty), nthreads))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_frames", int(ns.size()) + 1);
     return true;

@@ -2,6 +2,7 @@
 // denoise, once for every window it is in.
 #include "temporal_frame.h"
 
+#include "energy_outliers.h"
 #include "guides.h"
 
 #include <memory>
@@ -12,6 +13,23 @@ using OIIO::ImageBuf;
 using OIIO::ROI;
 
 namespace {
+
+// The excess of `f`'s outliers given out over its data window `dw` as its
+// own `denoise` does it: spread wide (known fireflies), or each over its
+// own window of the frame's planes.
+Planes<float> given_excess(const PreparedFrameData& f, const ROI& dw, int nthreads)
+{
+    ExcessWeights weights = firefly_sources(f.frame, dw, dw);
+    if (!weights.wide) {
+        const FeatureInputs& p = f.planes;
+        const NlmFrame own { &p.colour, &p.variance, &p.features, &p.features, &p.values,
+                             nullptr,   denoise_search_radius, true };
+        fill_outside(weights, ROI(0, 0, 0, 0), own, p.colour, p.variance, dw,
+                     denoise_patch_radius, f.frame.strength, nthreads);
+        normalise_weights(weights);
+    }
+    return spread_excess_planes(weights, f.frame.excess, dw, nthreads);
+}
 
 // `denoise`'s steps on `f` over its data window, then its planes, into
 // `out`.
@@ -30,9 +48,11 @@ bool prepare(ImageBuf& dst, const FrameInput& f, int nthreads, PreparedFrameData
             && !load_guide_channels(temporal_op, dst, *f.guides.motion, f.beauty->roi(),
                                     nthreads, out.motion)))
         return false;
-    // Read into the planes: not needed again.
+    out.given_excess = given_excess(out, f.beauty->roi(), nthreads);
+    // Read into the planes and the excess given out: not needed again.
     out.frame.guides = Guides();
     out.frame.variance.reset();
+    out.frame.excess = Planes<float>();
     return true;
 }
 

@@ -16,10 +16,13 @@ namespace mcdenoise {
 /// neighbour. Not movable (`frame.guides` may point into `frame`).
 struct PreparedFrameData {
     FrameInput input;     ///< the frame as given
-    /// The clamped beauty, its excess and the strength (its variance image
-    /// and guides are dropped once read into `planes`).
+    /// The clamped beauty and the strength (its variance image, guides and
+    /// excess are dropped once read into `planes` and `given_excess`).
     DenoiseFrame frame;
     FeatureInputs planes; ///< features, colour, variance and values over the data window
+    /// The outliers' excess over the data window as the frame's own
+    /// `denoise` gives it out (a plane per channel).
+    Planes<float> given_excess;
     GuideChannels motion; ///< the motion guide over the data window; no planes without one
 
     bool has_motion() const { return !motion.values.empty(); }

@@ -19,15 +19,16 @@ TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const ROI& reg
     const int nc   = centre.colour->nchannels();
     const int dims = centre.features->dims.nchannels();
     const auto lw  = luminance_weights(nc);
-    std::vector<Plane<float>> weights;
+    TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
+                      { Planes<float>(region, nc), Plane<float>(region) },
+                      { Planes<float>(region, dims), IdPlane() },
+                      {} };
+    std::vector<Plane<float>>& weights = g.weights;
     for (size_t k = 1; k < frames.size(); ++k) {
         weights.emplace_back(region);
         match_weights(frames[k], *centre.colour, *centre.variance, dw, patch_radius, strength,
                       nthreads, weights.back());
     }
-    TemporalGuide g { { Planes<float>(region, nc), Plane<float>(region) },
-                      { Planes<float>(region, nc), Plane<float>(region) },
-                      { Planes<float>(region, dims), IdPlane() } };
     // Row by row, each plane: the centre's, plus each neighbour's times its
     // weight (squared for the variance), over the total weight (squared).
     const size_t nf = frames.size();

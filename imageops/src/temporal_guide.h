@@ -6,6 +6,8 @@
 
 #include "nlmeans_frames.h"
 
+#include <vector>
+
 namespace mcdenoise {
 
 /// Colour, variance and feature planes over one region.
@@ -13,6 +15,8 @@ struct TemporalGuide {
     ColourField colour;
     VarianceField variance;
     FeatureField features;  ///< dimensions only
+    /// Each neighbour's weight (frames[1] on) at offset 0, over the region.
+    std::vector<Plane<float>> weights;
 };
 
 /// At each pixel of `region` (inside `dw`, the centre's data window): the
@@ -22,7 +26,8 @@ struct TemporalGuide {
 /// the centre 1, a neighbour by how well its patch and features match the
 /// centre's (`match_weights`). The variance is that of the weighted mean,
 /// sum(w^2 v) / (sum w)^2; the features the same weighted mean of the
-/// frames' feature dimensions (`features`, as the frames scale them).
+/// frames' feature dimensions (`features`, as the frames scale them); the
+/// neighbours' weights are kept (`weights`).
 /// Every frame's colour, variance and features must cover `region`.
 TemporalGuide temporal_guide(const std::vector<NlmFrame>& frames, const OIIO::ROI& region,
                              const OIIO::ROI& dw, int patch_radius, float strength,
