@@ -2,7 +2,8 @@
 // sequences: no neighbours is `denoise`, a still noiseless shot stays
 // as it is, a shifted shot averages the pixels its motion points at (chained
 // over two frames, a missing frame's vector repeated) or that the search
-// finds without motion, another surface in a neighbour gets no weight, the
+// finds without motion, another surface in a neighbour gets no weight, a
+// firefly's excess is shared by the frames that show its surface, the
 // result is the same for any thread count, ROI split and neighbour order,
 // and frames prepared once give it too.
 #include <mcdenoise/mcdenoise.h>
@@ -102,6 +103,60 @@ struct RandomShot {
         return frame;
     }
 };
+
+// A flat grey frame (0.5) with one pixel at `peak`, a large measured
+// variance (every patch distance 0, the peak's excess over the firefly
+// bound 1.0 a known firefly) and a flat albedo.
+struct PeakFrame {
+    ImageBuf beauty, variance, albedo;
+    PeakFrame(float peak, float albedo_value)
+        : beauty(constant(3, 0.5f)), variance(constant(3, 1.0f)), albedo(constant(3, albedo_value))
+    {
+        const float p[3] = { peak, peak, peak };
+        beauty.setpixel(width / 2, height / 2, p, 3);
+    }
+    mcd::FrameInput input() const
+    {
+        mcd::FrameInput f { &beauty, {} };
+        f.guides.variance = &variance;
+        f.guides.albedo   = &albedo;
+        return f;
+    }
+};
+
+// Each channel of `with` less `without`, summed over the frame.
+std::vector<double> channel_gain(const ImageBuf& with, const ImageBuf& without)
+{
+    const std::vector<float> a = testimg::pixels(with), b = testimg::pixels(without);
+    std::vector<double> gain(3, 0.0);
+    for (size_t i = 0; i < a.size(); ++i)
+        gain[i % 3] += double(a[i]) - double(b[i]);
+    return gain;
+}
+
+// What a firefly of 2.5 in the frame at `firefly_offset` (0: the centre)
+// adds to the centre's result of a shot of three frames (offsets -1, 0,
+// 1): the result with it less the result with the peak at 1.0, at or
+// below the firefly bound (the same clamped frames, so the same average).
+// The centre's albedo is `centre_albedo`, the neighbours' 0.5.
+std::vector<double> shot_gain(int firefly_offset, float centre_albedo)
+{
+    const auto result = [&](float peak) {
+        const PeakFrame before(firefly_offset == -1 ? peak : 1.0f, 0.5f),
+            centre(firefly_offset == 0 ? peak : 1.0f, centre_albedo),
+            after(firefly_offset == 1 ? peak : 1.0f, 0.5f);
+        return mcd::denoise(centre.input(), { before.input(), after.input() }, { -1, 1 });
+    };
+    return channel_gain(result(2.5f), result(1.0f));
+}
+
+// The same for the frame denoised alone: its whole excess.
+std::vector<double> single_gain()
+{
+    const PeakFrame with(2.5f, 0.5f), without(1.0f, 0.5f);
+    return channel_gain(mcd::denoise(with.beauty, with.input().guides),
+                        mcd::denoise(without.beauty, without.input().guides));
+}
 
 }  // namespace
 
@@ -206,6 +261,25 @@ TEST(Temporal, WrongMotionFindsNothing)
     const ImageBuf out = mcd::denoise(centre.input(), { prev.input() }, { -1 });
     ASSERT_FALSE(out.has_error()) << out.geterror();
     EXPECT_TRUE(testimg::bit_identical(out, centre.beauty)) << "no weight from frame -1";
+}
+
+TEST(Temporal, AFireflysExcessIsSharedByTheFramesThatShowItsSurface)
+{
+    // The frames match everywhere (weight 1 each): the excess a frame
+    // alone gives back is shared by the three, wherever the firefly is.
+    const std::vector<double> whole = single_gain();
+    ASSERT_GT(whole[0], 1.0);  // 2.5 less a bound near 1
+    for (int offset : { -1, 0, 1 }) {
+        const std::vector<double> shared = shot_gain(offset, 0.5f);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(shared[c], whole[c] / 3.0, 1e-4) << offset;
+    }
+    // Neighbours on another surface (albedo 0.5 against 2: a feature
+    // weight near exp(-3 (1.5 / 0.3)^2 / 2)) leave the centre's excess to
+    // the centre.
+    const std::vector<double> kept = shot_gain(0, 2.0f);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(kept[c], whole[c], 1e-4);
 }
 
 TEST(Temporal, AnotherSurfaceGetsNoWeight)

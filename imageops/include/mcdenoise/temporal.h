@@ -54,6 +54,12 @@ struct FrameInput {
 ///    no weight, nor does one carried from outside the neighbour's data
 ///    window. Every channel is averaged with the same weights. The object
 ///    id is not read, as in `denoise`.
+/// 5. The excess the firefly clamp took out is given back as the shot's:
+///    each frame's excess given out over its own frame as its `denoise`
+///    does it (carried as the values are), averaged at each pixel with the
+///    temporal guide's weights (the centre 1). A firefly is shared among
+///    the frames that show the same surface, as its noise is; where no
+///    neighbour matches, the centre keeps its own excess.
 ///
 /// Every neighbour must have the centre's data window, channel count and
 /// set of the guides `denoise` reads (normal, depth, albedo, variance,
