@@ -214,17 +214,28 @@ CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
     const ROI& all = regions.colour;
     CarriedFrame out { { planes_like(src.colour.colour, regions.colour), Plane<float>() },
                        { planes_like(src.variance.colour, regions.variance), Plane<float>() },
-                       { Planes<float>(regions.window, src.features.dims.nchannels()), IdPlane() },
+                       { Planes<float>(regions.colour, src.features.dims.nchannels()), IdPlane() },
                        planes_like(src.values, regions.window),
-                       Plane<float>(regions.window), planes_like(excess, regions.window) };
+                       Plane<float>(regions.colour), Plane<float>(regions.colour),
+                       planes_like(excess, regions.window) };
     const bool ids = !src.features.ids.values.empty();
     if (ids)
-        out.features.ids = IdPlane(regions.window);
+        out.features.ids = IdPlane(regions.colour);
     parallel_rows(all, nthreads, [&](int y) {
         for (int x = all.xbegin; x < all.xend; ++x) {
             const Source s = trace(steps, offset, source_dw, x, y);
             const Taps t = linear_taps(s, source_dw);
             const size_t oc = out.colour.colour.offset(x, y);
+            const size_t q  = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
+            for (size_t d = 0; d < out.features.dims.values.size(); ++d)
+                out.features.dims.values[d][oc] = s.ok ? src.features.dims.values[d][q] : 0.0f;
+            if (ids)
+                out.features.ids.values[oc] = s.ok ? src.features.ids.values[q] : no_guide_id;
+            out.usable.values[oc]   = s.ok ? 1.0f : 0.0f;
+            out.in_place.values[oc] = s.ok && s.qx == x && s.qy == y && s.dx == 0.0f
+                                              && s.dy == 0.0f
+                                          ? 1.0f
+                                          : 0.0f;
             sample(src.colour.colour.values, out.colour.colour.values, oc, t, false);
             sample(src.colour.colour.finite, out.colour.colour.finite, oc, t, false);
             if (inside(regions.variance, x, y)) {
@@ -239,12 +250,6 @@ CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
             sample(src.values.values, out.values.values, o, sharp, false);
             sample(src.values.finite, out.values.finite, o, sharp, false);
             sample(excess.values, out.excess.values, o, sharp, false);
-            const size_t q = s.ok ? pixel_offset(source_dw, s.qx, s.qy) : 0;
-            for (size_t d = 0; d < out.features.dims.values.size(); ++d)
-                out.features.dims.values[d][o] = s.ok ? src.features.dims.values[d][q] : 0.0f;
-            if (ids)
-                out.features.ids.values[o] = s.ok ? src.features.ids.values[q] : no_guide_id;
-            out.usable.values[o] = s.ok ? 1.0f : 0.0f;
         }
     });
     return out;

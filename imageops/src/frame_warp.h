@@ -69,9 +69,12 @@ struct CarryRegions {
 struct CarriedFrame {
     ColourPlanes colour;    ///< over the colour region (no luminance)
     ColourPlanes variance;  ///< over the variance region (no luminance)
-    FeatureField features;  ///< over the window
+    FeatureField features;  ///< over the colour region
     Planes<float> values;   ///< every channel and its finite mask, over the window
-    Plane<float> usable;    ///< over the window: 1 where the pixel has a source, else 0
+    Plane<float> usable;    ///< over the colour region: 1 where the pixel has a source, else 0
+    /// Over the colour region: 1 where the source is the same pixel, not
+    /// moved (nothing resampled), else 0.
+    Plane<float> in_place;
     Planes<float> excess;   ///< the frame's excess given out, over the window
 };
 

@@ -11,6 +11,7 @@
 #include "guides.h"
 #include "nlmeans_frames.h"
 #include "operation.h"
+#include "shot_variance.h"
 #include "temporal_frame.h"
 #include "temporal_guide.h"
 #include "window.h"
@@ -33,12 +34,13 @@ constexpr int band_rows = 128;
 
 // The regions of the centre frame (data window `dw`) the average reads to
 // filter `roi`, as `nlmeans` reads them: the colour (the patches grown by
-// one), the variance (the patches) and the features and values (the
-// search windows).
+// one, and by the box `shot_variance` compares frames over), the variance
+// (the patches) and the features and values (the search windows).
 CarryRegions regions(const ROI& roi, const ROI& dw)
 {
     const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
-    return { grow_and_clip(patches, 1, dw), patches, grow_and_clip(roi, denoise_search_radius, dw) };
+    return { grow_and_clip(patches, 1 + agreement_radius, dw), patches,
+             grow_and_clip(roi, denoise_search_radius, dw) };
 }
 
 // Which guides a frame has that `denoise` reads, as flags in the order of
@@ -180,6 +182,12 @@ void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& ca
     for (const CarriedFrame& n : carried)
         frames.push_back({ &n.colour, &n.variance, &n.features, &c.features, &n.values,
                            &n.usable, radius, false });
+    std::vector<const Plane<float>*> in_place;
+    for (const CarriedFrame& n : carried)
+        in_place.push_back(&n.in_place);
+    const std::vector<VarianceField> variances = shot_variance(frames, in_place, regions(band, dw).variance, dw, nthreads);
+    for (size_t k = 0; k < frames.size(); ++k)
+        frames[k].variance = &variances[k];
     // The patches and features every candidate is compared with: the
     // centre's, averaged over the frames that match them.
     const float strength      = centre.frame.strength;
