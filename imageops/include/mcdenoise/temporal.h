@@ -37,13 +37,21 @@ struct FrameInput {
 ///    or has no motion guide repeats the previous step's vector. Without a
 ///    motion guide on the centre the neighbours are taken as they are, and
 ///    the search window in them is wider.
-/// 3. The temporal guide: at each pixel, the centre's colour and features
+/// 3. The shot's own measure of its noise: at each pixel, every frame's
+///    variance is raised to the sample variance of the colours of the
+///    frames that agree there, when three or more do (the centre, and each
+///    neighbour carried without resampling, its features matching and its
+///    7x7 mean colour within the noise of such a mean of the centre's). On
+///    a still shot it sees the noise a single frame's estimate misses (the
+///    clusters of rare bright samples a pixel filter spreads); a moving
+///    shadow or object disagrees over the box and is left out.
+/// 4. The temporal guide: at each pixel, the centre's colour and features
 ///    averaged with each neighbour's at that pixel, the centre weighing 1
 ///    and a neighbour its NL-means weight against the centre (its patch's
 ///    variance-normalised distance and its features, as below). It is the
 ///    centre where no neighbour matches (disocclusions, moving shadows),
 ///    and a cleaner, steadier centre where they do.
-/// 4. `denoise`'s NL-means average extends across frames: the centre's own
+/// 5. `denoise`'s NL-means average extends across frames: the centre's own
 ///    window (radius 5) and each neighbour's window of radius
 ///    `temporal_search_radius` (`temporal_still_search_radius` without
 ///    motion), every candidate weighed by the variance-normalised distance
@@ -54,7 +62,7 @@ struct FrameInput {
 ///    no weight, nor does one carried from outside the neighbour's data
 ///    window. Every channel is averaged with the same weights. The object
 ///    id is not read, as in `denoise`.
-/// 5. The excess the firefly clamp took out is given back as the shot's:
+/// 6. The excess the firefly clamp took out is given back as the shot's:
 ///    each frame's excess given out over its own frame as its `denoise`
 ///    does it (carried as the values are), averaged at each pixel with the
 ///    temporal guide's weights (the centre 1). A firefly is shared among
