@@ -249,7 +249,7 @@ CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
             const Taps sharp = cubic_taps(s, source_dw);
             sample(src.values.values, out.values.values, o, sharp, false);
             sample(src.values.finite, out.values.finite, o, sharp, false);
-            sample(excess.values, out.excess.values, o, sharp, false);
+            sample(excess.values, out.excess.values, o, t, false);
         }
     });
     return out;

@@ -92,7 +92,8 @@ struct CarriedFrame {
 /// smoother bilinear colour (less noise, better matches); what is averaged
 /// keeps the detail bilinear sampling blurs. `excess` (planes over
 /// `source_dw`: the frame's outliers' excess as its own `denoise` gives it
-/// out) is carried as the values are.
+/// out) is sampled bilinearly, as the colour (a spread-out excess needs no
+/// sharper kernel).
 CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
                          const OIIO::ROI& source_dw,
                          const std::vector<const GuideChannels*>& steps, int offset,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace mcdenoise {
 
@@ -24,28 +25,27 @@ constexpr float correlated_pixels = 2.0f;
 // The mean of `value(x, y)` over the box of `agreement_radius` around each
 // pixel of `region`, clipped to `dw`, into `out` (over `region`).
 template<class Value>
-void box_mean(Value&& value, const ROI& region, const ROI& dw, Plane<float>& out)
+void box_mean(Value&& value, const ROI& region, const ROI& dw, int nthreads, Plane<float>& out)
 {
-    const ROI src = grow_and_clip(region, agreement_radius, dw);
-    const ROI cols = grow_and_clip(ROI(region.xbegin, region.xend, src.ybegin, src.yend),
-                                   agreement_radius, dw);
-    Plane<float> rows(ROI(cols.xbegin, cols.xend, region.ybegin, region.yend));
-    for (int y = region.ybegin; y < region.yend; ++y) {
+    const ROI cols = grow_and_clip(region, agreement_radius, dw);
+    parallel_rows(region, nthreads, [&](int y) {
         const Span ys = clip_window(y, agreement_radius, dw.ybegin, dw.yend);
+        const float rows = float(ys.end - ys.begin);
+        std::vector<float> column(size_t(cols.width()));
         for (int x = cols.xbegin; x < cols.xend; ++x) {
             float sum = 0.0f;
             for (int qy = ys.begin; qy < ys.end; ++qy)
                 sum += value(x, qy);
-            rows.at(x, y) = sum / float(ys.end - ys.begin);
+            column[size_t(x - cols.xbegin)] = sum / rows;
         }
         for (int x = region.xbegin; x < region.xend; ++x) {
             const Span xs = clip_window(x, agreement_radius, dw.xbegin, dw.xend);
             float sum = 0.0f;
             for (int qx = xs.begin; qx < xs.end; ++qx)
-                sum += rows.at(qx, y);
+                sum += column[size_t(qx - cols.xbegin)];
             out.at(x, y) = sum / float(xs.end - xs.begin);
         }
-    }
+    });
 }
 
 // The feature weight between `f`'s features and `centre`'s at (x, y).
@@ -74,7 +74,7 @@ std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
     Plane<float> mean(region);
     for (int c = 0; c < nc; ++c) {
         box_mean([&](int x, int y) { return *centre.variance->colour.from(c, x, y); }, region,
-                 dw, mean);
+                 dw, nthreads, mean);
         for (size_t i = 0; i < allowed.values.size(); ++i)
             allowed.values[i] += agreement_sigmas * agreement_sigmas * 2.0f * mean.values[i]
                                  * correlated_pixels / box;
@@ -88,7 +88,7 @@ std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
             box_mean([&](int x, int y) {
                          return *f.colour->colour.from(c, x, y) - *centre.colour->colour.from(c, x, y);
                      },
-                     region, dw, mean);
+                     region, dw, nthreads, mean);
             for (size_t i = 0; i < apart.values.size(); ++i)
                 apart.values[i] += mean.values[i] * mean.values[i];
         }
@@ -112,10 +112,15 @@ std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
                                          const std::vector<const Plane<float>*>& in_place,
                                          const ROI& region, const ROI& dw, int nthreads)
 {
+    const bool any = std::any_of(in_place.begin(), in_place.end(), [](const Plane<float>* p) {
+        return std::any_of(p->values.begin(), p->values.end(), [](float v) { return v > 0.0f; });
+    });
+    std::vector<VarianceField> out;
+    if (!any || frames.size() < 3)
+        return out;
     const int nc  = frames[0].colour->nchannels();
     const auto lw = luminance_weights(nc);
     const std::vector<Plane<float>> agrees = agreement(frames, in_place, region, dw, nthreads);
-    std::vector<VarianceField> out;
     for (size_t k = 0; k < frames.size(); ++k)
         out.push_back({ Planes<float>(region, nc), Plane<float>(region) });
     parallel_rows(region, nthreads, [&](int y) {

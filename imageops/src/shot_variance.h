@@ -27,7 +27,10 @@ constexpr int agreement_radius = 3;
 /// out, while a cluster of rare bright samples the pixel filter spread
 /// over a few pixels counts. Every frame's colour, usable factor and
 /// features must cover `region` grown by `agreement_radius` (clipped to
-/// `dw`), the centre's variance too.
+/// `dw`), the centre's variance too; `in_place[k]` (1 where frame k + 1 was
+/// carried without resampling) the region. Where nothing can agree (fewer
+/// than three frames, or no neighbour in place anywhere in the planes:
+/// a moving camera) the result is empty: the frames' own variances stand.
 std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
                                          const std::vector<const Plane<float>*>& in_place,
                                          const OIIO::ROI& region, const OIIO::ROI& dw,

@@ -185,8 +185,9 @@ void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& ca
     std::vector<const Plane<float>*> in_place;
     for (const CarriedFrame& n : carried)
         in_place.push_back(&n.in_place);
-    const std::vector<VarianceField> variances = shot_variance(frames, in_place, regions(band, dw).variance, dw, nthreads);
-    for (size_t k = 0; k < frames.size(); ++k)
+    const std::vector<VarianceField> variances
+        = shot_variance(frames, in_place, regions(band, dw).variance, dw, nthreads);
+    for (size_t k = 0; k < variances.size(); ++k)
         frames[k].variance = &variances[k];
     // The patches and features every candidate is compared with: the
     // centre's, averaged over the frames that match them.
