@@ -96,7 +96,7 @@ TEST(ShotVariance, LeavesOutAMovedNeighbourAndAnotherSurface)
 {
     std::vector<Frame> frames { { 0.5f, 0.4f, 0.0f, px, py }, { 0.5f, 0.0f, 0.0f, px, py },
                                 { 0.5f, -0.2f, 0.0f, px, py }, { 0.5f, 0.1f, 0.0f, px, py },
-                                { 0.5f, 0.3f, 3.0f, px, py } };  // features apart: weight exp(-4.5)
+                                { 0.5f, 0.3f, 3.0f, px, py } };  // features apart: weight exp(-9)
     frames[2].in_place.at(px, py) = 0.0f;                       // resampled there
     EXPECT_NEAR(*measure(frames)[1].colour.from(1, px, py), expected({ 0.9, 0.5, 0.6 }), 1e-6f);
 }

@@ -174,6 +174,12 @@ ExcessWeights firefly_sources(const DenoiseFrame& frame, const ROI& roi, const R
                           denoise_search_radius);
 }
 
+NlmFrame own_window(const FeatureInputs& planes)
+{
+    return { &planes.colour,   &planes.variance, &planes.features, &planes.features,
+             &planes.values,   nullptr,          denoise_search_radius, true };
+}
+
 bool finish_firefly_weights(ImageBuf& dst, const DenoiseFrame& frame, const ROI& roi,
                             const ROI& dw, int nthreads, ExcessWeights& weights)
 {
@@ -184,11 +190,8 @@ bool finish_firefly_weights(ImageBuf& dst, const DenoiseFrame& frame, const ROI&
                                  denoise_feature_sigmas, window,
                                  grow_and_clip(window, denoise_patch_radius, dw), nthreads, planes))
             return false;
-        const NlmFrame own { &planes.colour,   &planes.variance, &planes.features,
-                             &planes.features, &planes.values,   nullptr,
-                             denoise_search_radius, true };
-        fill_outside(weights, roi, own, planes.colour, planes.variance, dw, denoise_patch_radius,
-                     frame.strength, nthreads);
+        fill_outside(weights, roi, own_window(planes), planes.colour, planes.variance, dw,
+                     denoise_patch_radius, frame.strength, nthreads);
     }
     normalise_weights(weights);
     return true;

@@ -49,6 +49,10 @@ bool prepare_denoise_frame(OIIO::ImageBuf& dst, const OIIO::ImageBuf& beauty, co
 ExcessWeights firefly_sources(const DenoiseFrame& frame, const OIIO::ROI& roi,
                               const OIIO::ROI& dw);
 
+/// The frame of `planes` as `denoise` searches it: its own window of
+/// radius `denoise_search_radius`, its features compared with its own.
+NlmFrame own_window(const FeatureInputs& planes);
+
 /// Complete `weights` after the average of `roi` filled those inside it:
 /// the sources outside `roi` from `frame`'s own window (`fill_outside`, its
 /// planes read over their windows), then every window normalised. On

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <vector>
 
 namespace mcdenoise {
@@ -21,6 +20,8 @@ constexpr float agreement_sigmas = 3.0f;
 /// How many times the variance of independent pixels' mean a box mean's
 /// variance is taken to be (see shot_variance.h).
 constexpr float correlated_pixels = 2.0f;
+/// The feature weight (features.h) a neighbour's pixel needs to count.
+constexpr float min_feature_weight = 0.25f;
 
 // The mean of `value(x, y)` over the box of `agreement_radius` around each
 // pixel of `region`, clipped to `dw`, into `out` (over `region`).
@@ -46,17 +47,6 @@ void box_mean(Value&& value, const ROI& region, const ROI& dw, int nthreads, Pla
             out.at(x, y) = sum / float(xs.end - xs.begin);
         }
     });
-}
-
-// The feature weight between `f`'s features and `centre`'s at (x, y).
-float feature_weight(const FeatureField& f, const FeatureField& centre, int x, int y)
-{
-    float d2 = 0.0f;
-    for (int d = 0; d < f.dims.nchannels(); ++d) {
-        const float diff = *f.dims.from(d, x, y) - *centre.dims.from(d, x, y);
-        d2 += diff * diff;
-    }
-    return std::exp(-0.5f * d2);
 }
 
 // Whether each neighbour agrees with the centre at each pixel of `region`
@@ -94,9 +84,14 @@ std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
         }
         Plane<float> agrees(region);
         parallel_rows(region, nthreads, [&](int y) {
+            const int n = region.width();
+            const std::vector<float> none(size_t(n), 0.0f);
+            std::vector<float> features(static_cast<size_t>(n));
+            centre.features->weights_row(y, region.xbegin, n, 0, 0, none.data(), 1.0f,
+                                         features.data(), *f.features);
             for (int x = region.xbegin; x < region.xend; ++x)
                 agrees.at(x, y) = put.at(x, y) > 0.0f
-                                          && feature_weight(*f.features, *centre.features, x, y) >= 0.5f
+                                          && features[size_t(x - region.xbegin)] >= min_feature_weight
                                           && apart.at(x, y) <= allowed.at(x, y)
                                       ? 1.0f
                                       : 0.0f;

@@ -16,8 +16,9 @@ constexpr int agreement_radius = 3;
 /// Each frame's variance (`frames[k].variance`) over `region`, raised at
 /// each pixel to the sample variance of the colours of the frames that
 /// agree with the centre (`frames[0]`) there, when three or more do. A
-/// neighbour agrees where it has a source (`usable`), its features match
-/// the centre's (feature weight at least 1/2) and its mean colour over the
+/// neighbour agrees where it was carried in place (`in_place`), its
+/// features match the centre's (feature weight, as features.h weighs them,
+/// at least 1/4) and its mean colour over the
 /// (2 agreement_radius + 1)^2 box (clipped to `dw`) is within
 /// `agreement_sigmas` standard deviations of the centre's, the variance of
 /// the difference of the two means taken as twice the centre's mean
@@ -25,7 +26,7 @@ constexpr int agreement_radius = 3;
 /// count (a renderer's pixel filter correlates neighbouring pixels). So a
 /// moving shadow or object, which disagrees over the whole box, is left
 /// out, while a cluster of rare bright samples the pixel filter spread
-/// over a few pixels counts. Every frame's colour, usable factor and
+/// over a few pixels counts. Every frame's colour and
 /// features must cover `region` grown by `agreement_radius` (clipped to
 /// `dw`), the centre's variance too; `in_place[k]` (1 where frame k + 1 was
 /// carried without resampling) the region. Where nothing can agree (fewer

@@ -22,9 +22,7 @@ Planes<float> given_excess(const PreparedFrameData& f, const ROI& dw, int nthrea
     ExcessWeights weights = firefly_sources(f.frame, dw, dw);
     if (!weights.wide) {
         const FeatureInputs& p = f.planes;
-        const NlmFrame own { &p.colour, &p.variance, &p.features, &p.features, &p.values,
-                             nullptr,   denoise_search_radius, true };
-        fill_outside(weights, ROI(0, 0, 0, 0), own, p.colour, p.variance, dw,
+        fill_outside(weights, ROI(0, 0, 0, 0), own_window(p), p.colour, p.variance, dw,
                      denoise_patch_radius, f.frame.strength, nthreads);
         normalise_weights(weights);
     }
