@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """aov_backoff_study.py: a numpy study of two steps after `--aovs auto
---denoise` (docs/aovs.md, "Studied: back-off and reconciliation"):
+--denoise` (docs/aovs.md, "Studied (2026-12-05): back-off towards the raw pass, then
+reconciliation"):
 
 - back-off: each written pass D blended per pixel towards its raw pass R,
   by a = clip(1 - KAPPA s2 / m2, 0, 1), where m2 is the 3x3 mean of |D - R|^2
@@ -23,7 +24,6 @@ import subprocess
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
 from scipy.ndimage import minimum_filter, uniform_filter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -71,17 +71,19 @@ def run(noisy, ref, tag):
         if np.abs(Tp).max() == 0: continue
         O, s2 = backoff(D, R); out[p] = (R, Tp, D, O); s2s[p] = s2
     cyc = [p for p in out if not p.startswith("Combined_")]
-    col = lambda p: (rgb(N, p[:-3] + "Col") if rgb(N, p[:-3] + "Col") is not None else 1.0) if p[:-3] in LOBES else 1.0
+    ones = np.ones_like(Bd)
+    colours = {p: rgb(N, p[:-3] + "Col") if p[:-3] in LOBES else None for p in cyc}
+    col = lambda p: colours[p] if colours[p] is not None else ones
     # reconcile the Cycles-style passes with --denoise's beauty
     reb = lambda get: sum(col(p) * get(p) for p in cyc)
     rawreb = reb(lambda p: out[p][0])
     ok = (np.abs(rawreb - rgb(N, "")) <= 1e-3 * (np.abs(rgb(N, "")) + 1e-3)).all(axis=2)
-    E = {p: (col(p) ** 2 if p[:-3] in LOBES else np.ones_like(Bd)) * s2s[p][:, :, None] for p in cyc}
+    E = {p: col(p) ** 2 * s2s[p][:, :, None] for p in cyc}
     tot = sum(E.values()) + 1e-30
     delta = Bd - reb(lambda p: out[p][3])
     rec = {}
     for p in cyc:
-        c = col(p); c = c if isinstance(c, np.ndarray) else np.ones_like(Bd)
+        c = col(p)
         share = np.where(c > 1e-4, delta * E[p] / tot / np.maximum(c, 1e-4), 0)
         rec[p] = np.maximum(out[p][3] + np.where(ok[:, :, None], share, 0), 0)
     for p in out:
