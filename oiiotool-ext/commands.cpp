@@ -72,17 +72,22 @@ std::vector<Role> roles_of(mcdenoise::GuideMask guides)
 mcdenoise::Guides feature_guides(const Call& call) { return library_guides(call.guides); }
 
 /// `denoise` of the beauty with the light passes of `call`, which are
-/// replaced by their denoised forms.
+/// replaced by their denoised forms; each pass a term of its renderer's
+/// rebuild of the beauty (`LightPass::sum`), times its colour pass if any.
 bool denoise_layers(const Call& call)
 {
     std::vector<const ImageBuf*> layers;
-    for (const ImageBuf& layer : *call.layers)
-        layers.push_back(&layer);
+    std::vector<mcdenoise::LayerTerm> terms;
+    for (size_t i = 0; i < call.layers->images.size(); ++i) {
+        const ImageBuf& colour = call.layers->colours[i];
+        layers.push_back(&call.layers->images[i]);
+        terms.push_back({ call.layers->passes[i].sum, colour.initialized() ? &colour : nullptr });
+    }
     std::vector<ImageBuf> denoised;
     if (!mcdenoise::denoise_layers(call.dst, denoised, call.beauty, layers, feature_guides(call), {},
-                                   call.nthreads))
+                                   call.nthreads, terms))
         return false;
-    *call.layers = std::move(denoised);
+    call.layers->images = std::move(denoised);
     return true;
 }
 
@@ -100,7 +105,7 @@ const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
 /// single-frame form, which that equals bit for bit).
 bool denoise_call(const Call& c)
 {
-    if (c.layers && !c.layers->empty())
+    if (c.layers && !c.layers->images.empty())
         return denoise_layers(c);
     if (!c.neighbours || c.neighbours->empty())
         return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);

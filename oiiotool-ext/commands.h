@@ -4,6 +4,7 @@
 // all read this table; adding a filter is adding one row.
 #pragma once
 
+#include "light_passes.h"
 #include "roles.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -73,7 +74,7 @@ struct Call {
     /// call's beauty is its beauty as read).
     const WindowFrame* centre = nullptr;
     /// The light passes (--aovs) a command that takes them denoises in place.
-    std::vector<ImageBuf>* layers = nullptr;
+    LightLayers* layers = nullptr;
 
     /// Parameter `i` as an int (validated at parse time).
     int integer(size_t i) const;

@@ -135,7 +135,7 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& gu
     std::string name = dashed(command.name);
     ImageBuf dst;
     Call call{ dst, current, guides, step.values, nthreads, window ? &window->neighbours : nullptr,
-               window ? &window->centre : nullptr, command.takes_layers ? &layers.images : nullptr };
+               window ? &window->centre : nullptr, command.takes_layers ? &layers : nullptr };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);

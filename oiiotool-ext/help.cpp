@@ -255,8 +255,10 @@ std::string help_markdown()
     md += motion_guide_text;
 
     md += "\n## Light passes\n\n`--aovs auto` (with `--denoise`) denoises every pass of the beauty's view "
-          "layer named below, with the beauty's own per-pixel weights (`mcdenoise::denoise_layers`), so "
-          "passes that add up to the beauty add up to the written beauty. Only the pass's channels "
+          "layer named below (`mcdenoise::denoise_layers`): with the beauty's own per-pixel weights, "
+          "backed off towards the raw pass wherever those blurred it beyond the pass's own noise, "
+          "then made to add up again, so passes that add up to the beauty add up to the written "
+          "beauty. Only the pass's channels "
           "matching the beauty's colour (`R,G,B`) change; its alpha, the colour (filter) passes "
           "(`DiffCol`, `GlossCol`, `TransCol`, `*_albedo`), the guides and the ids are never changed. "
           "`--aovs LIST` names the passes (comma separated) instead; a name that is missing, a colour "
@@ -268,6 +270,11 @@ std::string help_markdown()
           "on its own. docs/aovs.md has the measurements.\n\n| renderer | passes |\n|---|---|\n";
     for (const auto& [renderer, names] : known_light_passes())
         md += format("| {} | {} |\n", renderer, cell(names));
+    md += "\nThe passes that add up to the beauty together (each a rebuild of its own; the passes "
+          "are corrected to it wherever the raw ones add up to the raw beauty, within 1e-3 of its "
+          "size):\n\n| renderer | rebuild |\n|---|---|\n";
+    for (const auto& [renderer, sum] : known_rebuilds())
+        md += format("| {} | {} |\n", renderer, cell(sum));
 
     md += "\n## Options\n";
     for (const std::string& group : option_groups) {

@@ -23,31 +23,54 @@ namespace {
 /// Cycles' lobes: their <Lobe>Dir and <Lobe>Ind passes are irradiance, the
 /// light divided by the <Lobe>Col pass.
 const std::vector<std::string> cycles_lobes = { "Diff", "Gloss", "Trans" };
-/// The light passes "auto" takes, by renderer: exact pass names, and
-/// prefixes of light-group passes (<prefix><group>).
+/// The light passes "auto" takes, by renderer: the lists of exact pass
+/// names that each add up to the beauty, and prefixes of light-group
+/// passes (<prefix><group>), every group of every prefix adding up to the
+/// beauty together.
 struct KnownPasses {
     const char* renderer;
-    std::vector<std::string> names;
+    std::vector<std::vector<std::string>> sums;
     std::vector<std::string> group_prefixes;
 };
 const std::vector<KnownPasses> known_passes = {
     { "Cycles, testrender",
-      { "DiffDir", "DiffInd", "GlossDir", "GlossInd", "TransDir", "TransInd", "VolumeDir",
-        "VolumeInd", "Emit", "Env" },
+      { { "DiffDir", "DiffInd", "GlossDir", "GlossInd", "TransDir", "TransInd", "VolumeDir",
+          "VolumeInd", "Emit", "Env" } },
       { "Combined_" } },
     { "Arnold",
-      { "direct", "indirect", "emission", "background", "diffuse", "specular", "coat",
-        "transmission", "sss", "volume", "sheen", "diffuse_direct", "diffuse_indirect",
-        "specular_direct", "specular_indirect", "coat_direct", "coat_indirect",
-        "transmission_direct", "transmission_indirect", "sss_direct", "sss_indirect",
-        "volume_direct", "volume_indirect", "sheen_direct", "sheen_indirect" },
+      { { "direct", "indirect", "emission", "background" },
+        { "diffuse", "specular", "coat", "transmission", "sss", "volume", "sheen" },
+        { "diffuse_direct", "diffuse_indirect", "specular_direct", "specular_indirect",
+          "coat_direct", "coat_indirect", "transmission_direct", "transmission_indirect",
+          "sss_direct", "sss_indirect", "volume_direct", "volume_indirect", "sheen_direct",
+          "sheen_indirect" } },
       { "RGBA_" } },
     { "RenderMan",
-      { "directDiffuse", "indirectDiffuse", "directSpecular", "indirectSpecular", "subsurface",
-        "transmissive", "emissive" },
+      { { "directDiffuse", "indirectDiffuse", "directSpecular", "indirectSpecular", "subsurface",
+          "transmissive", "emissive" } },
       { "directDiffuse_", "indirectDiffuse_", "directSpecular_", "indirectSpecular_",
         "subsurface_", "transmissive_", "emissive_" } },
 };
+
+/// The rebuild `pass` is a term of: the index of its list of names or of
+/// its renderer's group prefixes, counted over `known_passes` in order;
+/// -1 if "auto" does not know it.
+int sum_of(const std::string& pass)
+{
+    int index = 0;
+    for (const KnownPasses& known : known_passes) {
+        for (const std::vector<std::string>& names : known.sums) {
+            if (std::find(names.begin(), names.end(), pass) != names.end())
+                return index;
+            ++index;
+        }
+        for (const std::string& prefix : known.group_prefixes)
+            if (pass.size() > prefix.size() && Strutil::starts_with(pass, prefix))
+                return index;
+        ++index;
+    }
+    return -1;
+}
 
 /// True if `pass` is a Cycles irradiance pass (<Lobe>Dir, <Lobe>Ind).
 bool is_cycles_light(const std::string& pass)
@@ -66,17 +89,7 @@ bool is_cycles_colour(const std::string& pass)
 }
 
 /// True if "auto" takes `pass`.
-bool is_known_light(const std::string& pass)
-{
-    for (const KnownPasses& known : known_passes) {
-        if (std::find(known.names.begin(), known.names.end(), pass) != known.names.end())
-            return true;
-        for (const std::string& prefix : known.group_prefixes)
-            if (pass.size() > prefix.size() && Strutil::starts_with(pass, prefix))
-                return true;
-    }
-    return false;
-}
+bool is_known_light(const std::string& pass) { return sum_of(pass) >= 0; }
 
 /// The pass names of view layer `layer` in file order, each once.
 std::vector<std::string> layer_passes(const ImageSpec& spec, const std::string& layer)
@@ -117,7 +130,7 @@ LightPass light_pass(const ImageSpec& spec, const std::string& pass, const Disco
 {
     LightPass light { pass, matching_components(spec, pass_channels(spec, found.layer, pass),
                                                 colour_of(found)),
-                      {} };
+                      {}, sum_of(pass) };
     if (is_cycles_light(pass))
         light.colour = matching_components(
             spec, pass_channels(spec, found.layer, pass.substr(0, pass.size() - 3) + "Col"),
@@ -142,16 +155,42 @@ void check_listed(const ImageSpec& spec, const std::string& name, const LightPas
                               channel_names(spec, colour_of(found))));
 }
 
+/// The rebuild the passes with a colour pass are terms of (Cycles'), or
+/// -1 when none has one.
+int coloured_sum(const std::vector<LightPass>& passes)
+{
+    for (const LightPass& pass : passes)
+        if (!pass.colour.empty())
+            return pass.sum;
+    return -1;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> known_light_passes()
 {
     std::vector<std::pair<std::string, std::string>> rows;
     for (const KnownPasses& known : known_passes) {
-        std::string names = Strutil::join(known.names, ", ");
+        std::vector<std::string> names;
+        for (const std::vector<std::string>& sum : known.sums)
+            names.insert(names.end(), sum.begin(), sum.end());
         for (const std::string& prefix : known.group_prefixes)
-            names += ", " + prefix + "<group>";
-        rows.emplace_back(known.renderer, names);
+            names.push_back(prefix + "<group>");
+        rows.emplace_back(known.renderer, Strutil::join(names, ", "));
+    }
+    return rows;
+}
+
+std::vector<std::pair<std::string, std::string>> known_rebuilds()
+{
+    std::vector<std::pair<std::string, std::string>> rows;
+    for (const KnownPasses& known : known_passes) {
+        for (const std::vector<std::string>& sum : known.sums)
+            rows.emplace_back(known.renderer, Strutil::join(sum, " + "));
+        std::vector<std::string> groups;
+        for (const std::string& prefix : known.group_prefixes)
+            groups.push_back(prefix + "<group>");
+        rows.emplace_back(known.renderer, Strutil::join(groups, " + "));
     }
     return rows;
 }
@@ -206,9 +245,10 @@ ImageBuf rebuild_beauty(const LightLayers& layers, const ImageBuf& beauty)
     const int nc = std::min(3, beauty.nchannels());
     ImageBuf sum = IBA::zero(OIIO::ROI(beauty.roi().xbegin, beauty.roi().xend,
                                        beauty.roi().ybegin, beauty.roi().yend, 0, 1, 0, nc));
+    const int rebuilt = coloured_sum(layers.passes);
     std::vector<bool> done(layers.passes.size(), false);
     for (size_t i = 0; i < layers.passes.size(); ++i) {
-        if (done[i])
+        if (done[i] || layers.passes[i].sum != rebuilt)
             continue;
         ImageBuf term = layers.images[i];
         // the other pass of the same colour (Dir with Ind) goes in first

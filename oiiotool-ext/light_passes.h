@@ -20,11 +20,19 @@ struct LightPass {
     std::string name;           ///< the pass name as in the file ("DiffDir", "RGBA_key")
     std::vector<int> channels;  ///< its channels matching the beauty's colour, in that order
     std::vector<int> colour;    ///< Cycles: the colour pass it is multiplied by; empty: added as is
+    /// The rebuild of the beauty it is a term of (`known_rebuilds`' index
+    /// of the passes that add up with it), -1 for none.
+    int sum = -1;
 };
 
 /// The passes `--aovs auto` takes, by renderer: ("Arnold", "direct, ...,
 /// RGBA_<group>"), for --help and docs/mcdtool.md.
 std::vector<std::pair<std::string, std::string>> known_light_passes();
+
+/// The passes that add up to the beauty together, one list a rebuild, by
+/// renderer: (renderer, "DiffDir + ... + Env"), for --help and
+/// docs/mcdtool.md. A light-group prefix stands for every group.
+std::vector<std::pair<std::string, std::string>> known_rebuilds();
 
 /// The light passes `request` ("auto" or a comma list of pass names) names
 /// in the beauty's view layer of `spec`. "auto" takes every known additive
@@ -54,8 +62,10 @@ LightLayers load_light_layers(const ImageBuf& input, std::vector<LightPass> pass
 constexpr double rebuild_tolerance = 1e-4;
 
 /// `beauty` with its colour channels replaced by the rebuild of `layers`:
-/// sum over passes of Col x (Dir + Ind) (passes sharing a colour pass
-/// added first, as a compositor does) plus the passes without colour.
+/// sum over the passes of the Cycles rebuild (`LightPass::sum`, the one
+/// with colour passes) of Col x (Dir + Ind) (passes sharing a colour pass
+/// added first, as a compositor does) plus Emit and Env; light groups are
+/// a rebuild of their own and not added.
 ImageBuf rebuild_beauty(const LightLayers& layers, const ImageBuf& beauty);
 
 /// The input channels written for the beauty and the layers, and their

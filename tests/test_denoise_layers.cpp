@@ -6,6 +6,7 @@
 // its data window read as 0, and bad layers refused.
 #include <mcdenoise/mcdenoise.h>
 
+#include "layer_channels.h"
 #include "support/guide_images.h"
 #include "support/test_images.h"
 
@@ -117,7 +118,7 @@ std::vector<ImageBuf> check_shared_operator(const ImageBuf& beauty, ImageBuf& ou
     std::vector<const ImageBuf*> layers = pointers(hots);
     layers.push_back(&layer);
     std::vector<ImageBuf> outs;
-    EXPECT_TRUE(mcdenoise::denoise_layers(out, outs, beauty, layers)) << out.geterror();
+    EXPECT_TRUE(mcdenoise::denoise_layers_shared(out, outs, beauty, layers)) << out.geterror();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             double expect_layer[2] = {}, expect_colour[3] = {};

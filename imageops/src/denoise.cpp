@@ -10,6 +10,7 @@
 #include "nlmeans_frames.h"
 #include "operation.h"
 #include "window.h"
+#include "window_variance.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -65,17 +66,11 @@ bool estimated_variance(ImageBuf& dst, const ImageBuf& clamped, const ROI& regio
     const int nc = colour.nchannels();
     variance.reset(OIIO::ImageSpec(colour_roi, OIIO::TypeDesc::FLOAT));
     parallel_rows(region, nthreads, [&](int y) {
-        const Span ys = clip_window(y, 1, region.ybegin, region.yend);
         for (int x = region.xbegin; x < region.xend; ++x) {
-            const Span xs = clip_window(x, 1, region.xbegin, region.xend);
-            float* out    = static_cast<float*>(variance.pixeladdr(x, y));
-            for (int c = 0; c < nc; ++c) {
-                float smallest = *sample.colour.from(c, xs.begin, ys.begin);
-                for (int qy = ys.begin; qy < ys.end; ++qy)
-                    for (int qx = xs.begin; qx < xs.end; ++qx)
-                        smallest = std::min(smallest, *sample.colour.from(c, qx, qy));
-                out[c] = smallest;
-            }
+            float* out = static_cast<float*>(variance.pixeladdr(x, y));
+            for (int c = 0; c < nc; ++c)
+                out[c] = smallest_in_window(sample.colour.values[size_t(c)].data(),
+                                            sample.colour.region, x, y);
         }
     });
     return true;

@@ -1,19 +1,25 @@
 // denoise_layers.cpp: denoise of a beauty with its light layers: the
 // beauty's steps of `denoise`, each decision (the outlier split, the
 // NL-means weights, the factor the excess is given back with) made once on
-// the beauty and applied to every layer's planes alongside.
+// the beauty and applied to every layer's planes alongside; then each layer
+// backed off where those weights blurred it, and the layers made to add up
+// to the denoised beauty again.
 #include <mcdenoise/denoise_layers.h>
 #include <mcdenoise/denoise.h>
 
 #include "denoise_frame.h"
 #include "energy_outliers.h"
 #include "guides.h"
+#include "layer_backoff.h"
 #include "layer_channels.h"
+#include "layer_sums.h"
 #include "operation.h"
 #include "window.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
+#include <map>
 #include <string>
 
 namespace mcdenoise {
@@ -68,6 +74,101 @@ bool split_layers(ImageBuf& dst, const std::vector<const ImageBuf*>& layers,
     return true;
 }
 
+/// Check `terms`: none, or one per layer, each colour readable and
+/// covering `roi` with the layer's colour channels.
+bool check_terms(ImageBuf& dst, const std::vector<const ImageBuf*>& layers,
+                 const std::vector<LayerTerm>& terms, const ROI& roi)
+{
+    if (!terms.empty() && terms.size() != layers.size()) {
+        dst.errorfmt("{}: {} layer terms for {} layers", op_name, terms.size(), layers.size());
+        return false;
+    }
+    for (size_t i = 0; i < terms.size(); ++i) {
+        const std::string name = "the colour of layer " + std::to_string(i);
+        if (terms[i].colour
+            && !check_guide(op_name, name.c_str(), dst, *terms[i].colour,
+                            std::min(3, layers[i]->nchannels()), roi))
+            return false;
+    }
+    return true;
+}
+
+/// `image` (a float image over a region holding `roi`) over `roi` only:
+/// moved, pixels and all, when it covers no more.
+ImageBuf within(ImageBuf&& image, const ROI& roi, int nthreads)
+{
+    if (image.roi().xbegin == roi.xbegin && image.roi().xend == roi.xend
+        && image.roi().ybegin == roi.ybegin && image.roi().yend == roi.yend)
+        return std::move(image);
+    ROI pixels    = roi;
+    pixels.chbegin = 0;
+    pixels.chend   = image.nchannels();
+    return OIIO::ImageBufAlgo::crop(image, pixels, nthreads);
+}
+
+/// A layer's result over the ROI, the layer as rendered over the ROI grown
+/// by `backoff_reach`, and the result's estimated error variance.
+struct LayerResult {
+    ImageBuf image;
+    PixelBlock raw;
+    Plane<float> error;
+};
+
+/// `layer`'s average (over the ROI grown by `backoff_reach`) backed off
+/// towards its kept values (`back_off_layer`) into `result`, over `roi`.
+bool back_off(ImageBuf& dst, const ImageBuf& layer, ImageBuf average, const Plane<float>& scale,
+              const ROI& roi, int nthreads, LayerResult& result)
+{
+    ROI read     = average.roi();
+    read.chbegin = 0;
+    read.chend   = layer.nchannels();
+    PixelBlock averaged;
+    if (!load_block(layer, read, result.raw) || !load_block(average, read, averaged)) {
+        dst.errorfmt("{}: could not read a layer: {}", op_name,
+                     layer.has_error() ? layer.geterror() : average.geterror());
+        return false;
+    }
+    // `averaged` views the average's pixels, which a move keeps in place.
+    result.image = within(std::move(average), roi, nthreads);
+    back_off_layer(result.image, averaged, result.raw, scale, nthreads, result.error);
+    return true;
+}
+
+/// The results of each rebuild of `terms` (every layer in one plain sum
+/// when empty) corrected to add up to the denoised beauty `out`
+/// (`reconcile_sum`) where the raw layers rebuild the raw `beauty`.
+bool add_up(ImageBuf& dst, const ImageBuf& out, const ImageBuf& beauty,
+            const std::vector<LayerTerm>& terms, const ROI& roi, int nthreads,
+            std::vector<LayerResult>& results)
+{
+    ROI colour     = roi;
+    colour.chbegin = 0;
+    colour.chend   = colour_channels(beauty.nchannels());
+    PixelBlock raw;
+    std::vector<PixelBlock> colours(results.size());
+    if (!load_block(beauty, colour, raw)) {
+        dst.errorfmt("{}: could not read the beauty: {}", op_name, beauty.geterror());
+        return false;
+    }
+    std::map<int, std::vector<SumTerm>> sums;
+    for (size_t i = 0; i < results.size(); ++i) {
+        const LayerTerm term = terms.empty() ? LayerTerm {} : terms[i];
+        if (term.sum < 0)
+            continue;
+        colour.chend = std::min(3, results[i].image.nchannels());
+        if (term.colour && !load_block(*term.colour, colour, colours[i])) {
+            dst.errorfmt("{}: could not read the colour of layer {}: {}", op_name, i,
+                         term.colour->geterror());
+            return false;
+        }
+        sums[term.sum].push_back({ &results[i].image, &results[i].raw,
+                                   term.colour ? &colours[i] : nullptr, &results[i].error });
+    }
+    for (const auto& sum : sums)
+        reconcile_sum(out, raw, sum.second, nthreads);
+    return true;
+}
+
 /// `from` (a float image over `roi`) into `out`: moved when `out` is
 /// uninitialized, else copied into its pixels.
 bool put_result(ImageBuf& dst, ImageBuf& from, const ROI& roi, int nthreads, ImageBuf& out)
@@ -85,35 +186,40 @@ bool put_result(ImageBuf& dst, ImageBuf& from, const ROI& roi, int nthreads, Ima
     return false;
 }
 
-}  // namespace
-
-bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
-                    const std::vector<const ImageBuf*>& layers, const Guides& guides, ROI roi,
-                    int nthreads)
+/// `denoise_layers`; with `own_noise` false, the layers come out of the
+/// beauty's operator alone (`denoise_layers_shared`).
+bool layers_denoised(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
+                     const std::vector<const ImageBuf*>& layers, const Guides& guides, ROI roi,
+                     int nthreads, const std::vector<LayerTerm>& terms, bool own_noise)
 {
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_layers(dst, layers, roi)
+        || !check_terms(dst, layers, terms, roi)
         || !check_denoise_guides(op_name, dst, beauty, guides, roi))
         return false;
     const ROI region = denoise_region(beauty, roi);
+    // The back-off reads windows around the ROI's pixels: the average is
+    // taken over `grown`, so the result does not depend on the ROI.
+    const ROI grown = grow_and_clip(roi, backoff_reach, beauty.roi());
     DenoiseFrame frame;
     SplitScales scales;
     std::vector<SumSource> values;
     std::vector<Planes<float>> excess;
     if (!prepare_denoise_frame(dst, beauty, guides, region, nthreads, frame, &scales)
-        || !split_layers(dst, layers, scales, region, roi, nthreads, values, excess))
+        || !split_layers(dst, layers, scales, region, grown, nthreads, values, excess))
         return false;
     ExcessWeights weights = firefly_sources(frame, roi, beauty.roi());
-    const WeightTap tap   = weight_tap(weights, roi);
+    const WeightTap tap   = weight_tap(weights, grown);
     // Into new images, so the excess can be added to float pixels in place.
     ImageBuf out;
-    std::vector<ImageBuf> outs;
-    if (!nlmeans_layers(out, outs, frame.clamped, layers, std::move(values), frame.guides,
+    std::vector<ImageBuf> averages;
+    if (!nlmeans_layers(out, averages, frame.clamped, layers, std::move(values), frame.guides,
                         denoise_search_radius, denoise_patch_radius, frame.strength,
-                        denoise_feature_sigmas, roi, nthreads, &tap)) {
+                        denoise_feature_sigmas, grown, nthreads, &tap)) {
         dst.errorfmt("{}", out.geterror());
         return false;
     }
-    if (!finish_firefly_weights(dst, frame, roi, beauty.roi(), nthreads, weights))
+    out = within(std::move(out), roi, nthreads);
+    if (!finish_firefly_weights(dst, frame, grown, beauty.roi(), nthreads, weights))
         return false;
     Plane<float> factors;
     if (!give_back_excess(op_name, out, weights, frame.excess, roi,
@@ -122,22 +228,49 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
         return false;
     }
     out.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
-    dst_layers.resize(layers.size());
+    std::vector<LayerResult> results(layers.size());
     for (size_t i = 0; i < layers.size(); ++i) {
-        give_back_layer_excess(outs[i], weights, excess[i], roi, factors, nthreads);
-        if (!put_result(dst, outs[i], roi, nthreads, dst_layers[i]))
+        if (own_noise
+            && !back_off(dst, *layers[i], std::move(averages[i]), scales.scale, roi, nthreads,
+                         results[i]))
             return false;
+        if (!own_noise)
+            results[i].image = within(std::move(averages[i]), roi, nthreads);
+        give_back_layer_excess(results[i].image, weights, excess[i], roi, factors, nthreads);
     }
+    if (own_noise && !add_up(dst, out, beauty, terms, roi, nthreads, results))
+        return false;
+    dst_layers.resize(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i)
+        if (!put_result(dst, results[i].image, roi, nthreads, dst_layers[i]))
+            return false;
     return put_result(dst, out, roi, nthreads, dst);
+}
+
+}  // namespace
+
+bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
+                    const std::vector<const ImageBuf*>& layers, const Guides& guides, ROI roi,
+                    int nthreads, const std::vector<LayerTerm>& terms)
+{
+    return layers_denoised(dst, dst_layers, beauty, layers, guides, roi, nthreads, terms, true);
+}
+
+bool denoise_layers_shared(ImageBuf& dst, std::vector<ImageBuf>& dst_layers,
+                           const ImageBuf& beauty, const std::vector<const ImageBuf*>& layers,
+                           const Guides& guides, ROI roi, int nthreads)
+{
+    return layers_denoised(dst, dst_layers, beauty, layers, guides, roi, nthreads, {}, false);
 }
 
 std::vector<ImageBuf> denoise_layers(const ImageBuf& beauty,
                                      const std::vector<const ImageBuf*>& layers,
-                                     const Guides& guides, ROI roi, int nthreads)
+                                     const Guides& guides, ROI roi, int nthreads,
+                                     const std::vector<LayerTerm>& terms)
 {
     std::vector<ImageBuf> out(1);
     std::vector<ImageBuf> dst_layers;
-    if (!denoise_layers(out[0], dst_layers, beauty, layers, guides, roi, nthreads)) {
+    if (!denoise_layers(out[0], dst_layers, beauty, layers, guides, roi, nthreads, terms)) {
         if (!out[0].has_error())
             out[0].errorfmt("mcdenoise: operation failed");
         return out;

@@ -5,6 +5,7 @@
 
 #include "weighted_sums.h"
 #include "window.h"
+#include "window_variance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,42 +32,6 @@ float log_depth(float d)
 float feature_scale(float sigma)
 {
     return float(1.0 / (double(sigma) * std::sqrt(2.0)));
-}
-
-// The region's pixels, row by row, with offsets into a plane of its width.
-template<class Fn>
-void for_each_pixel(const ROI& region, int nthreads, Fn&& fn)
-{
-    parallel_rows(region, nthreads, [&](int y) {
-        size_t i = pixel_offset(region, region.xbegin, y);
-        for (int x = region.xbegin; x < region.xend; ++x, ++i)
-            fn(x, y, i);
-    });
-}
-
-// Sample variance (divided by n - 1, 0 for n == 1) of `at(x, y)` over the
-// 3x3 window around each pixel of `region`, clipped to `bounds` (`at` reads
-// every such window), into `out`, a plane over `region`.
-template<class At>
-void estimate_variance(At&& at, const ROI& region, const ROI& bounds, int nthreads, float* out)
-{
-    for_each_pixel(region, nthreads, [&](int x, int y, size_t i) {
-        const Span xs = clip_window(x, 1, bounds.xbegin, bounds.xend);
-        const Span ys = clip_window(y, 1, bounds.ybegin, bounds.yend);
-        const int n   = xs.size() * ys.size();
-        double sum    = 0.0;
-        for (int qy = ys.begin; qy < ys.end; ++qy)
-            for (int qx = xs.begin; qx < xs.end; ++qx)
-                sum += at(qx, qy);
-        const double mean = sum / n;
-        double sq         = 0.0;
-        for (int qy = ys.begin; qy < ys.end; ++qy)
-            for (int qx = xs.begin; qx < xs.end; ++qx) {
-                const double d = at(qx, qy) - mean;
-                sq += d * d;
-            }
-        out[i] = n > 1 ? float(sq / (n - 1)) : 0.0f;
-    });
 }
 
 }  // namespace

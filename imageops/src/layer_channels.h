@@ -44,4 +44,14 @@ bool nlmeans_layers(OIIO::ImageBuf& dst, std::vector<OIIO::ImageBuf>& dst_layers
                     int patch_radius, float strength, const FeatureSigmas& sigmas, OIIO::ROI roi,
                     int nthreads, const WeightTap* tap = nullptr);
 
+/// `denoise_layers` with the layers through the beauty's operator alone:
+/// the outlier split, the NL-means weights and the excess given back, as
+/// for the beauty, without the back-off towards each layer's own values
+/// or the correction that makes them add up. The result is linear in the
+/// layers (what the back-off and the correction start from).
+bool denoise_layers_shared(OIIO::ImageBuf& dst, std::vector<OIIO::ImageBuf>& dst_layers,
+                           const OIIO::ImageBuf& beauty,
+                           const std::vector<const OIIO::ImageBuf*>& layers,
+                           const Guides& guides = {}, OIIO::ROI roi = {}, int nthreads = 0);
+
 }  // namespace mcdenoise

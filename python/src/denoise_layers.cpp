@@ -1,6 +1,7 @@
 // denoise_layers.cpp: `mcdenoise.denoise(beauty, guides, layers=[...])`,
 // the overload of `denoise` that also denoises light passes with the
-// beauty's weights (`denoise_layers`), returning (beauty, [layers]).
+// beauty's weights (`denoise_layers`), returning (beauty, [layers]);
+// `sums` and `colours` say how the layers rebuild the beauty.
 #include "denoise_layers.h"
 
 #include "operation.h"
@@ -9,23 +10,54 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <vector>
 
 namespace mcdpy {
 
 namespace {
 
+using Sums    = std::optional<std::vector<int>>;
+using Colours = std::optional<std::vector<std::optional<ImageArg>>>;
+
+/// The layer terms of `sums` and `colours` (each None, or one per layer;
+/// a colour may be None).
+std::vector<mcdenoise::LayerTerm> layer_terms(size_t nlayers, const Sums& given_sums,
+                                              const Colours& given_colours)
+{
+    static const Sums::value_type no_sums;
+    static const Colours::value_type no_colours;
+    const auto& sums    = given_sums ? *given_sums : no_sums;
+    const auto& colours = given_colours ? *given_colours : no_colours;
+    if ((!sums.empty() && sums.size() != nlayers) || (!colours.empty() && colours.size() != nlayers))
+        throw py::value_error("denoise_layers: sums and colours need one entry per layer");
+    std::vector<mcdenoise::LayerTerm> terms;
+    if (sums.empty() && colours.empty())
+        return terms;
+    terms.resize(nlayers);
+    for (size_t i = 0; i < nlayers; ++i) {
+        if (!sums.empty())
+            terms[i].sum = sums[i];
+        if (!colours.empty() && colours[i])
+            terms[i].colour = &colours[i]->image();
+    }
+    return terms;
+}
+
 /// `denoise_layers` as Python sees it: (denoised beauty, [denoised layers]),
 /// each in the kind it came in.
 py::object denoise_with_layers(const ImageArg& beauty, const std::vector<ImageArg>& layers,
-                               const GuidesArg& guides, ROI roi, int nthreads)
+                               const GuidesArg& guides, ROI roi, int nthreads,
+                               const Sums& sums, const Colours& colours)
 {
     std::vector<const ImageBuf*> inputs;
     for (const ImageArg& layer : layers)
         inputs.push_back(&layer.image());
+    const std::vector<mcdenoise::LayerTerm> terms = layer_terms(layers.size(), sums, colours);
     std::vector<ImageBuf> results = [&] {
         py::gil_scoped_release release;
-        return mcdenoise::denoise_layers(beauty.image(), inputs, guides.guides(), roi, nthreads);
+        return mcdenoise::denoise_layers(beauty.image(), inputs, guides.guides(), roi, nthreads,
+                                         terms);
     }();
     py::object denoised = to_python(std::move(results[0]), beauty);
     py::list out_layers;
@@ -41,10 +73,12 @@ void bind_denoise_layers(py::module_& m)
     const std::string doc = std::string("With `layers`: returns (denoised beauty, [denoised layers]).\n\n")
                             + library_doc("denoise_layers");
     m.def("denoise", &denoise_with_layers, doc.c_str(), py::arg("beauty"), py::kw_only(), py::arg("layers"),
-          py::arg("guides") = py::none(), py::arg_v("roi", ROI(), "ROI.All"), py::arg("nthreads") = 0);
+          py::arg("guides") = py::none(), py::arg_v("roi", ROI(), "ROI.All"), py::arg("nthreads") = 0,
+          py::arg("sums") = py::none(), py::arg("colours") = py::none());
     m.def("denoise_layers", &denoise_with_layers, library_doc("denoise_layers"), py::arg("beauty"),
           py::arg("layers"), py::arg("guides") = py::none(), py::arg_v("roi", ROI(), "ROI.All"),
-          py::arg("nthreads") = 0);
+          py::arg("nthreads") = 0, py::kw_only(), py::arg("sums") = py::none(),
+          py::arg("colours") = py::none());
 }
 
 }  // namespace mcdpy

@@ -34,10 +34,10 @@ def test_layers_that_sum_to_the_beauty_sum_to_the_result():
     assert mcdenoise.rel_mse(layers[0] + layers[1], result) <= 1e-6
     assert np.array_equal(result, mcdenoise.denoise(beauty))
     # ImageBufs in, ImageBufs out, same pixels
-    as_buf = [oiio.ImageBuf(oiio.ImageSpec(30, 24, 3, oiio.FLOAT)) for _ in range(2)]
-    for buf, array in zip(as_buf, (beauty, key)):
+    as_buf = [oiio.ImageBuf(oiio.ImageSpec(30, 24, 3, oiio.FLOAT)) for _ in range(3)]
+    for buf, array in zip(as_buf, (beauty, key, fill)):
         buf.set_pixels(oiio.ROI(), array)
-    buf_result, buf_layers = mcdenoise.denoise_layers(as_buf[0], [as_buf[1]])
+    buf_result, buf_layers = mcdenoise.denoise_layers(as_buf[0], as_buf[1:])
     assert isinstance(buf_layers[0], oiio.ImageBuf)
     assert np.array_equal(buf_layers[0].get_pixels(oiio.FLOAT), layers[0])
 
@@ -50,7 +50,9 @@ def test_layers_match_mcdtool_aovs(frames_with_passes, tmp_path):
     pixels, spec = read_pixels(path)
     guides = {name: planes(pixels, spec, chans) for name, chans in GUIDES.items()}
     passes = [planes(pixels, spec, [f"{p}.{c}" for c in "RGB"]) for p in ("GlossInd", "Emit")]
-    result, layers = mcdenoise.denoise(planes(pixels, spec, list("RGB")), guides=guides, layers=passes)
+    gloss_colour = planes(pixels, spec, [f"GlossCol.{c}" for c in "RGB"])
+    result, layers = mcdenoise.denoise(planes(pixels, spec, list("RGB")), guides=guides, layers=passes,
+                                       colours=[gloss_colour, None])
     written, wspec = read_pixels(out)
     assert np.array_equal(planes(written, wspec, list("RGB")), result)
     for name, layer in zip(("GlossInd", "Emit"), layers):

@@ -68,11 +68,14 @@ std::vector<ImageBuf> light_layers(const RenderBuffers& b)
 }
 
 /// The most the indirect diffuse pass's relMSE may keep of its raw relMSE
-/// (measured 0.10 on both scenes), and the most the rebuilt beauty's relMSE
-/// may be of --denoise alone's (measured 1.03 on cornell, 0.99 on
-/// interior), at 64x48, 16 spp against 512 spp (docs/aovs.md).
+/// (measured 0.11 on cornell, 0.15 on interior), the most the rebuilt
+/// beauty's relMSE may be of --denoise alone's (measured 1.00 on both:
+/// it is --denoise's), and the most any pass with light may keep of its
+/// raw relMSE (measured 1.01, cornell's Emit, and 1.53, interior's DiffDir:
+/// not yet never worse, see docs/aovs.md), at 64x48, 16 spp against 512 spp.
 constexpr double indirect_ratio = 0.2;
-constexpr double rebuilt_ratio  = 1.1;
+constexpr double rebuilt_ratio  = 1.02;
+constexpr double pass_ratio     = 1.6;
 
 class SceneLayers : public ::testing::TestWithParam<std::string> {};
 
@@ -167,9 +170,16 @@ TEST_P(SceneQuality, IndirectDiffuseLosesMostOfItsNoiseAndTheRebuiltBeautyStaysC
         raw.push_back(pass_image(b, offset));
     for (const ImageBuf& l : raw)
         layers.push_back(&l);
+    std::vector<ImageBuf> colours;
+    for (int lobe = 0; lobe < lobe_count; ++lobe)
+        colours.push_back(pass_image(b, 9 * lobe + 6));
+    std::vector<mcdenoise::LayerTerm> terms(light_offsets.size());
+    for (size_t i = 0; i < 2 * size_t(lobe_count); ++i)
+        terms[i].colour = &colours[i / 2];
     ImageBuf out;
     std::vector<ImageBuf> outs;
-    ASSERT_TRUE(mcdenoise::denoise_layers(out, outs, beauty, layers, guides)) << out.geterror();
+    ASSERT_TRUE(mcdenoise::denoise_layers(out, outs, beauty, layers, guides, {}, 0, terms))
+        << out.geterror();
     for (size_t i = 0; i < light_offsets.size(); ++i) {
         const ImageBuf truth = pass_image(ref, light_offsets[i]);
         const double before = mcdenoise::rel_mse(raw[i], truth);
@@ -181,6 +191,10 @@ TEST_P(SceneQuality, IndirectDiffuseLosesMostOfItsNoiseAndTheRebuiltBeautyStaysC
         if (light_offsets[i] == 3) {
             EXPECT_LE(after, indirect_ratio * before);
         }
+        if (before > 1e-6) {  // a pass with light in it
+            EXPECT_LE(after, pass_ratio * before)
+                << pass_channel_names()[size_t(light_offsets[i])];
+        }
     }
     const double alone   = mcdenoise::rel_mse(mcdenoise::denoise(beauty, guides), reference);
     const double rebuilt = mcdenoise::rel_mse(rebuild(b, outs), reference);
@@ -188,6 +202,9 @@ TEST_P(SceneQuality, IndirectDiffuseLosesMostOfItsNoiseAndTheRebuiltBeautyStaysC
                 rebuilt, rebuilt / alone);
     EXPECT_LE(rebuilt, rebuilt_ratio * alone);
     EXPECT_LE(mcdenoise::rel_mse(rebuild(b, raw), beauty), 1e-6);  // the raw passes add up
+    // and so do the denoised ones, to the denoised beauty
+    EXPECT_LE(mcdenoise::rel_mse(rebuild(b, outs), OIIO::ImageBufAlgo::channels(out, 3, { 0, 1, 2 })),
+              1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneQuality, ::testing::Values("cornell", "interior"));
