@@ -171,6 +171,30 @@ TEST(DenoiseLayers, AlphaGetsTheWeightsAlone)
         }
 }
 
+TEST(DenoiseLayers, ANoiseFreeEdgeStaysWhereTheBeautysWeightsBlurIt)
+{
+    // A direct pass with a hard shadow edge and no noise, an indirect pass
+    // with strong noise: the weights the noise sets blur the edge, and the
+    // back-off returns the direct pass to its own values.
+    const int w = 40, h = 32;
+    ImageBuf direct = testimg::random_image(w, h, 3, 1, 0.0f, 0.0f);
+    IBA::fill(direct, { 1.0f, 1.0f, 1.0f }, ROI(w / 2, w, 0, h));
+    const ImageBuf indirect = testimg::random_image(w, h, 3, 41, 0.0f, 2.0f);
+    const ImageBuf beauty   = IBA::add(direct, indirect);
+    ImageBuf shared_out, own_out;
+    std::vector<ImageBuf> shared, own;
+    ASSERT_TRUE(mcdenoise::denoise_layers_shared(shared_out, shared, beauty, { &direct, &indirect }));
+    ASSERT_TRUE(mcdenoise::denoise_layers(own_out, own, beauty, { &direct, &indirect }));
+    const double blurred = mcdenoise::rel_mse(shared[0], direct);
+    EXPECT_GT(blurred, 1e-3);
+    EXPECT_LT(mcdenoise::rel_mse(own[0], direct), 0.1 * blurred);
+    // the indirect pass (uniform noise around 1) is still denoised, and
+    // the two add up
+    ImageBuf one = testimg::random_image(w, h, 3, 1, 1.0f, 1.0f);
+    EXPECT_LT(mcdenoise::rel_mse(own[1], one), 0.5 * mcdenoise::rel_mse(indirect, one));
+    EXPECT_LE(mcdenoise::rel_mse(IBA::add(own[0], own[1]), rgb(own_out)), 1e-6);
+}
+
 TEST(DenoiseLayers, TheBeautyIsBitIdenticalToDenoisesWithAnyLayers)
 {
     const ImageBuf beauty = noisy_rgba(37, 29, 31);

@@ -28,12 +28,14 @@ DENOISE = {
     "product": (0.442, 0.833, 0.772),
 }
 # The worst ratio of a written light pass's relMSE to its raw relMSE
-# under --aovs auto --denoise, per still and spp, as measured.
+# under --aovs auto --denoise, per still and spp, as measured (after issue
+# 33: each pass backed off towards its own values, then corrected to add
+# up; docs/aovs.md).
 AOV_WORST = {
-    "dof": (0.99, 1.00, 1.64), "metal": (0.76, 1.73, 3.60),
-    "interior": (0.63, 0.91, 3.28), "glossy": (0.91, 1.09, 2.85),
-    "glass": (0.97, 2.62, 2.48), "volume": (0.80, 1.57, 3.17),
-    "product": (1.44, 0.98, 2.83),
+    "dof": (1.005, 1.001, 1.002), "metal": (0.974, 1.312, 1.648),
+    "interior": (0.711, 0.974, 3.157), "glossy": (0.983, 0.984, 1.021),
+    "glass": (0.989, 0.996, 1.006), "volume": (0.825, 1.229, 1.744),
+    "product": (1.009, 1.015, 1.402),
 }
 # Shots: --temporal over per-frame --denoise, as measured.
 TEMPORAL = {
@@ -43,7 +45,7 @@ TEMPORAL = {
 # Where today's code is worse than raw, and the issue that fixes it.
 KNOWN_WORSE = {
     "denoise": "#31 (not met there): metal at 64 spp",
-    "aovs": "#33 (light passes denoised with the beauty's weights)",
+    "aovs": "#33 (not met there: a few passes with little noise, or glossy ones, at 16-64 spp)",
 }
 
 
@@ -76,7 +78,8 @@ def test_denoise_no_worse_than_raw_and_keeps_the_frame_mean_on_every_still(tool)
 
 def test_light_passes_no_worse_than_raw_and_rebuild_the_written_beauty(tool):
     """One test for both figures: they come from the same 21 runs. The
-    product shot's light groups are checked against raw only."""
+    rebuilds (Cycles-style, and the product shot's light groups) are
+    checked where the raw passes rebuild the raw beauty."""
     failures = []
     for scene in STILLS:
         for spp, measured in zip(SPPS, AOV_WORST[scene]):
@@ -86,9 +89,15 @@ def test_light_passes_no_worse_than_raw_and_rebuild_the_written_beauty(tool):
                     continue
                 if out / raw > limit(measured):
                     failures.append(f"{scene} {spp} spp {name}: {out / raw:.2f}x raw > {limit(measured):.2f}")
-            if scene != "product" and f["rebuild"] > 1e-6:
-                failures.append(f"{scene} {spp} spp: written passes against the written beauty, "
-                                f"relMSE {f['rebuild']:.2e}")
+            for figure in ("rebuild", "groups_rebuild"):
+                if f.get(figure) is not None and f[figure] > 1e-6:
+                    failures.append(f"{scene} {spp} spp: written passes ({figure}) against the "
+                                    f"written beauty, relMSE {f[figure]:.2e}")
+            if f["beauty_aovs"] > 1.02 * f["beauty_denoise"]:
+                failures.append(f"{scene} {spp} spp: --aovs beauty {f['beauty_aovs']:.5f} > 1.02x "
+                                f"--denoise's {f['beauty_denoise']:.5f}")
+            if "alpha_raw" in f and f["alpha_aovs"] > max(f["alpha_raw"], 1e-9):
+                failures.append(f"{scene} {spp} spp: alpha {f['alpha_aovs']:.2e} > raw {f['alpha_raw']:.2e}")
     assert not failures, failures
 
 

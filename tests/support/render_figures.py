@@ -166,11 +166,30 @@ def still_figures(tool, folder, scene, spp):
     return figures
 
 
+def rebuilt_where_raw_rebuilds(raw, out, names=None):
+    """The written passes' rebuild of the written beauty, as relMSE over the
+    pixels where the raw passes rebuild the raw beauty (within 1e-3 of its
+    size in every channel): the light groups' plain sum when `names` are
+    given, else the Cycles-style rebuild. None where no pixel rebuilds."""
+    def rebuild(img):
+        if names:
+            return sum(img.light_pass(n) for n in names)
+        return cycles_rebuild(img.light_pass, img.has_pass)
+    raw_sum, beauty = rebuild(raw), raw.beauty()
+    size = np.abs(beauty) + np.abs(raw_sum)
+    mask = np.all(np.abs(raw_sum - beauty) <= 1e-3 * size + 1e-7, axis=2)
+    if not mask.any():
+        return None
+    return rel_mse(rebuild(out)[mask], out.beauty()[mask])
+
+
 def aov_figures(tool, folder, scene, spp):
     """`--aovs auto --denoise` on a render with light passes: each written
     pass's relMSE raw and denoised; the beauty of --denoise alone and of
-    --aovs; how exactly the written passes rebuild the written beauty;
-    alpha raw and written."""
+    --aovs; how exactly the written passes rebuild the written beauty
+    where the raw ones rebuild the raw beauty (the Cycles-style rebuild,
+    and the light groups' sum when there are groups); alpha raw and
+    written."""
     source = os.path.join(folder, f"{scene}_{spp}.exr")
     raw, ref = Image(source), Image(os.path.join(folder, f"{scene}_ref.exr"))
     out = tool.result(f"{scene}_{spp}_aovs", source, "--aovs", "auto", "--denoise")
@@ -180,14 +199,12 @@ def aov_figures(tool, folder, scene, spp):
         truth = ref.light_pass(name)
         passes[name] = (rel_mse(raw.light_pass(name), truth), rel_mse(out.light_pass(name), truth))
     groups = [n for n in passes if n.startswith("Combined_")]
-    if groups:
-        rebuilt = sum(out.light_pass(n) for n in groups)
-    else:
-        rebuilt = cycles_rebuild(out.light_pass, out.has_pass)
     figures = dict(passes=passes, beauty_raw=rel_mse(raw.beauty(), ref.beauty()),
                    beauty_denoise=rel_mse(alone.beauty(), ref.beauty()),
                    beauty_aovs=rel_mse(out.beauty(), ref.beauty()),
-                   rebuild=rel_mse(rebuilt, out.beauty()))
+                   rebuild=rebuilt_where_raw_rebuilds(raw, out))
+    if groups:
+        figures["groups_rebuild"] = rebuilt_where_raw_rebuilds(raw, out, groups)
     if ref.alpha() is not None:
         a_ref = ref.alpha()[..., None]
         figures["alpha_raw"] = rel_mse(raw.alpha()[..., None], a_ref)
