@@ -1,7 +1,10 @@
 // aov_speed.cpp: what each extra light pass costs `denoise_layers`: the
 // fastest of a few runs of `denoise` on a testrender frame's beauty, then of
-// `denoise_layers` with 1, 2 and 4 of its 3-channel passes (run in turn,
-// the fastest of each kept), printed as the table of docs/aovs.md.
+// `denoise_layers` with 1, 2, 4 and all 8 of its 3-channel light passes,
+// each with its rebuild's colour pass as mcdtool passes them (run in turn,
+// the fastest of each kept), printed as the table of docs/aovs.md. Only
+// all 8 rebuild the beauty, so only there are the passes corrected to add
+// up (every pixel); with fewer the rebuild is checked and fails.
 //
 // Usage: aov_speed FILE.exr [THREADS [RUNS]]   (a `testrender --passes` render)
 #include <mcdenoise/mcdenoise.h>
@@ -59,29 +62,41 @@ int main(int argc, char** argv)
     mcdenoise::Guides guides = r.guides();
     guides.object_id = nullptr;
     OIIO::ImageBuf file(argv[1]);
-    std::vector<OIIO::ImageBuf> passes;
-    for (const char* name : { "DiffInd", "DiffDir", "GlossInd", "GlossDir" }) {
-        const std::string p = name;
-        passes.push_back(OIIO::ImageBufAlgo::channels(file, 3, {}, {}, { p + ".R", p + ".G", p + ".B" }));
-        if (passes.back().has_error() || !passes.back().initialized()) {
-            std::fprintf(stderr, "aov_speed: %s has no %s pass\n", argv[1], name);
+    const auto pass = [&](const std::string& p) {
+        return OIIO::ImageBufAlgo::channels(file, 3, {}, {}, { p + ".R", p + ".G", p + ".B" });
+    };
+    // the light passes, and the colour each is multiplied by in the rebuild
+    const std::vector<std::pair<std::string, std::string>> names = {
+        { "DiffInd", "DiffCol" },   { "DiffDir", "DiffCol" },   { "GlossInd", "GlossCol" },
+        { "GlossDir", "GlossCol" }, { "TransInd", "TransCol" }, { "TransDir", "TransCol" },
+        { "Emit", "" },             { "Env", "" },
+    };
+    std::vector<OIIO::ImageBuf> passes, colours;
+    for (const auto& [name, colour] : names) {
+        passes.push_back(pass(name));
+        colours.push_back(colour.empty() ? OIIO::ImageBuf() : pass(colour));
+        if (passes.back().has_error() || !passes.back().initialized() || colours.back().has_error()) {
+            std::fprintf(stderr, "aov_speed: %s has no %s pass or its colour\n", argv[1], name.c_str());
             return 1;
         }
     }
     // Round-robin over the configurations, the fastest run of each kept,
     // so a load that changes during the run hits them all alike.
-    const std::vector<size_t> counts = { 0, 1, 2, 4 };
+    const std::vector<size_t> counts = { 0, 1, 2, 4, 8 };
     std::vector<double> best(counts.size(), 1e30), best_cpu(counts.size(), 1e30);
     for (int run = 0; run < runs; ++run)
         for (size_t k = 0; k < counts.size(); ++k) {
             std::vector<const OIIO::ImageBuf*> layers;
-            for (size_t i = 0; i < counts[k]; ++i)
+            std::vector<mcdenoise::LayerTerm> terms;
+            for (size_t i = 0; i < counts[k]; ++i) {
                 layers.push_back(&passes[i]);
+                terms.push_back({ 0, colours[i].initialized() ? &colours[i] : nullptr });
+            }
             const auto [wall, cpu] = seconds([&] {
                 if (layers.empty())
                     mcdenoise::denoise(r.beauty, guides, {}, threads);
                 else
-                    mcdenoise::denoise_layers(r.beauty, layers, guides, {}, threads);
+                    mcdenoise::denoise_layers(r.beauty, layers, guides, {}, threads, terms);
             });
             best[k]     = std::min(best[k], wall);
             best_cpu[k] = std::min(best_cpu[k], cpu);

@@ -121,11 +121,11 @@ def srgb(linear):
 
 
 def figure(folder, scene, path):
-    """Rows: beauty, DiffInd, GlossInd; columns: raw, denoised, reference."""
+    """Rows: beauty, DiffDir, DiffInd, GlossInd; columns: raw, denoised, reference."""
     noisy, ref = read(os.path.join(folder, f"{scene}_16.exr")), read(os.path.join(folder, f"{scene}_ref.exr"))
     layered = read(os.path.join(folder, f"{scene}_aovs.exr"))
     rows = []
-    for name in ("", "DiffInd", "GlossInd"):
+    for name in ("", "DiffDir", "DiffInd", "GlossInd"):
         get = (lambda img: rgb(img)) if not name else (lambda img, n=name: pass_of(img, n))
         rows.append(np.concatenate([srgb(get(img)) for img in (noisy, layered, ref)], axis=1))
     pixels = np.concatenate(rows, axis=0).astype(np.float32)

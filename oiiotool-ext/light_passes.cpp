@@ -185,8 +185,13 @@ std::vector<std::pair<std::string, std::string>> known_rebuilds()
 {
     std::vector<std::pair<std::string, std::string>> rows;
     for (const KnownPasses& known : known_passes) {
-        for (const std::vector<std::string>& sum : known.sums)
-            rows.emplace_back(known.renderer, Strutil::join(sum, " + "));
+        for (const std::vector<std::string>& sum : known.sums) {
+            std::vector<std::string> terms;
+            for (const std::string& pass : sum)  // Cycles' irradiance times its colour pass
+                terms.push_back(is_cycles_light(pass) ? pass.substr(0, pass.size() - 3) + "Col x " + pass
+                                                      : pass);
+            rows.emplace_back(known.renderer, Strutil::join(terms, " + "));
+        }
         std::vector<std::string> groups;
         for (const std::string& prefix : known.group_prefixes)
             groups.push_back(prefix + "<group>");
