@@ -64,13 +64,16 @@ bool estimated_variance(ImageBuf& dst, const ImageBuf& clamped, const ROI& regio
     if (!load_variance(op_name, dst, nullptr, colour, colour_roi, region, nthreads, sample))
         return false;
     const int nc = colour.nchannels();
+    Planes<float> smallest(sample.colour.region, nc);
+    for (int c = 0; c < nc; ++c)
+        smallest_in_windows(sample.colour.values[size_t(c)].data(), sample.colour.region,
+                            nthreads, smallest.values[size_t(c)].data());
     variance.reset(OIIO::ImageSpec(colour_roi, OIIO::TypeDesc::FLOAT));
     parallel_rows(region, nthreads, [&](int y) {
         for (int x = region.xbegin; x < region.xend; ++x) {
             float* out = static_cast<float*>(variance.pixeladdr(x, y));
             for (int c = 0; c < nc; ++c)
-                out[c] = smallest_in_window(sample.colour.values[size_t(c)].data(),
-                                            sample.colour.region, x, y);
+                out[c] = *smallest.from(c, x, y);
         }
     });
     return true;

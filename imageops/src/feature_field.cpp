@@ -191,10 +191,10 @@ bool load_variance(const char* op, ImageBuf& dst, const ImageBuf* variance,
     out           = VarianceField { Planes<float>(region, nc), Plane<float>(region) };
     if (!variance) {
         for (int c = 0; c < nc; ++c)
-            estimate_variance([&](int x, int y) { return *colour.colour.from(c, x, y); },
-                              region, data_window, nthreads, out.colour.values[size_t(c)].data());
-        estimate_variance([&](int x, int y) { return colour.luminance.at(x, y); }, region,
-                          data_window, nthreads, out.luminance.values.data());
+            window_variances(colour.colour.values[size_t(c)].data(), colour.colour.region, region,
+                             data_window, nthreads, out.colour.values[size_t(c)].data());
+        window_variances(colour.luminance.values.data(), colour.luminance.region, region,
+                         data_window, nthreads, out.luminance.values.data());
         return true;
     }
     GuideChannels given;

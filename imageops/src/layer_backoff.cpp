@@ -1,5 +1,7 @@
 // layer_backoff.cpp: a light layer's back-off towards its own values
-// where the beauty's weights blurred it, and the error that leaves.
+// where the beauty's weights blurred it, and the error that leaves. The
+// window figures are planes over the average's region, one channel at a
+// time through the same scratch planes.
 #include "layer_backoff.h"
 
 #include "window_variance.h"
@@ -15,155 +17,99 @@ using OIIO::ROI;
 
 namespace {
 
-/// The difference e = average - kept, per channel, over the average's
-/// region; 0 where not finite.
-Planes<float> differences(const PixelBlock& average, const PixelBlock& layer,
-                          const Plane<float>& scale, int nthreads)
-{
-    const ROI& grown = average.region;
-    Planes<float> diff(grown, average.nchannels);
-    for_each_pixel(grown, nthreads, [&](int x, int y, size_t i) {
-        const float* a = average.pixel(x, y);
-        const float* r = layer.pixel(x, y);
-        const float s  = scale.at(x, y);
-        for (int c = 0; c < average.nchannels; ++c) {
-            const float e             = a[c] - r[c] * s;
-            diff.values[size_t(c)][i] = std::isfinite(e) ? e : 0.0f;
-        }
-    });
-    return diff;
-}
+/// `v`, or 0 where not finite.
+float finite_or_zero(float v) { return std::isfinite(v) ? v : 0.0f; }
 
-/// The average's channels as planes over its region; 0 where not finite.
-Planes<float> planes_of(const PixelBlock& average, int nthreads)
-{
-    Planes<float> out(average.region, average.nchannels);
-    for_each_pixel(average.region, nthreads, [&](int x, int y, size_t i) {
-        const float* a = average.pixel(x, y);
-        for (int c = 0; c < average.nchannels; ++c)
-            out.values[size_t(c)][i] = std::isfinite(a[c]) ? a[c] : 0.0f;
-    });
-    return out;
-}
-
-/// Per channel of `planes`, the sample variance of each 3x3 window.
-Planes<float> window_variances(const Planes<float>& planes, int nthreads)
-{
-    Planes<float> out(planes.region, planes.nchannels());
-    for (int c = 0; c < planes.nchannels(); ++c)
-        estimate_variance([&](int x, int y) { return *planes.from(c, x, y); }, planes.region,
-                          planes.region, nthreads, out.values[size_t(c)].data());
-    return out;
-}
-
-/// The noise of (x, y) from the window variances: per channel the smallest
-/// among the 3x3 windows around it, summed, corrected for the minimum's bias.
-float noise_at(const Planes<float>& variances, int x, int y)
-{
-    float sum = 0.0f;
-    for (int c = 0; c < variances.nchannels(); ++c)
-        sum += smallest_in_window(variances.values[size_t(c)].data(), variances.region, x, y);
-    return sum / smallest_window_bias;
-}
-
-/// The 3x3 mean of |e|^2 (summed over channels) around (x, y), the window
-/// clipped to the differences' region.
-float mean_square_at(const Planes<float>& diff, int x, int y)
-{
-    const ROI& grown = diff.region;
-    const Span xs    = clip_window(x, 1, grown.xbegin, grown.xend);
-    const Span ys    = clip_window(y, 1, grown.ybegin, grown.yend);
-    double sum       = 0.0;
-    for (int c = 0; c < diff.nchannels(); ++c)
-        for (int qy = ys.begin; qy < ys.end; ++qy) {
-            const float* row = diff.from(c, xs.begin, qy);
-            for (int i = 0; i < xs.size(); ++i)
-                sum += double(row[i]) * double(row[i]);
-        }
-    return float(sum / (xs.size() * ys.size()));
-}
-
-/// The noise left in an average, per pixel of `roi`: the smallest-window
-/// estimate of its own channels (`noise_at`).
-Plane<float> residual_noise(const PixelBlock& average, const ROI& roi, int nthreads)
-{
-    const Planes<float> variances = window_variances(planes_of(average, nthreads), nthreads);
-    Plane<float> out(roi);
-    for_each_pixel(roi, nthreads,
-                   [&](int x, int y, size_t i) { out.values[i] = noise_at(variances, x, y); });
-    return out;
-}
-
-/// One pixel's figures of an average beside the values it averaged.
-struct Figures {
-    float s2;  ///< the kept values' noise
-    float t2;  ///< the noise left in the average, at most s2
-    float m2;  ///< the 3x3 mean of |average - kept|^2: bias^2 + s2
-    /// The average's squared bias, m2 - s2 (0 when below).
-    float bias2() const { return std::max(0.0f, m2 - s2); }
+/// Planes reused for every channel of one layer.
+struct Scratch {
+    Plane<float> values, variance, mean_square, smallest;
+    explicit Scratch(const ROI& region)
+        : values(region), variance(region), mean_square(region), smallest(region)
+    {
+    }
 };
 
-/// Per pixel of `roi`, the squared level of the average, summed over
-/// channels (0 where not finite).
-Plane<float> levels(const PixelBlock& average, const ROI& roi, int nthreads)
+/// Add to `noise` (and to `mean_square` when given) the figures of the
+/// plane in `scratch.values`: the smallest 3x3 window variance among the
+/// 3x3 windows around each pixel over `smallest_window_bias`, and the 3x3
+/// mean of the values squared.
+void add_window_figures(Scratch& scratch, int nthreads, Plane<float>& noise,
+                        Plane<float>* mean_square)
 {
-    Plane<float> out(roi);
-    for_each_pixel(roi, nthreads, [&](int x, int y, size_t i) {
-        const float* a = average.pixel(x, y);
-        float sum      = 0.0f;
-        for (int c = 0; c < average.nchannels; ++c)
-            sum += std::isfinite(a[c]) ? a[c] * a[c] : 0.0f;
-        out.values[i] = sum;
+    const ROI& region = scratch.values.region;
+    window_variances(scratch.values.values.data(), region, region, region, nthreads,
+                     scratch.variance.values.data(),
+                     mean_square ? scratch.mean_square.values.data() : nullptr);
+    smallest_in_windows(scratch.variance.values.data(), region, nthreads,
+                        scratch.smallest.values.data());
+    for_each_pixel(region, nthreads, [&](int, int, size_t i) {
+        noise.values[i] += scratch.smallest.values[i] / smallest_window_bias;
+        if (mean_square)
+            mean_square->values[i] += scratch.mean_square.values[i];
     });
-    return out;
 }
 
-/// The median over `roi` of noise / level where the level is above 0
-/// (0 where it is 0 everywhere): the layer's typical relative noise.
-float median_relative_noise(const Plane<float>& noise, const Plane<float>& level)
+/// The median over `roi` of noise / |average|^2 where |average|^2 is above
+/// 0 (0 where it is 0 everywhere): the layer's typical relative noise.
+float median_relative_noise(const Plane<float>& noise, const PixelBlock& average, const ROI& roi);
+
+/// An average beside the values it averaged (times the split's scale):
+/// per pixel of the average's region, summed over channels, the figures
+/// `back_off_layer` documents.
+struct AverageFit {
+    Plane<float> noise;        ///< s2 from the windows alone
+    Plane<float> residual;     ///< the same estimate of the average's own values
+    Plane<float> mean_square;  ///< m2
+    float most_relative_noise = 0.0f;
+
+    AverageFit(const PixelBlock& average, const PixelBlock& layer, const Plane<float>& scale,
+               const ROI& roi, int nthreads)
+        : noise(average.region, 0.0f)
+        , residual(average.region, 0.0f)
+        , mean_square(average.region, 0.0f)
+    {
+        Scratch scratch(average.region);
+        for (int c = 0; c < average.nchannels; ++c) {
+            for_each_pixel(average.region, nthreads, [&](int x, int y, size_t i) {
+                scratch.values.values[i] = finite_or_zero(average.pixel(x, y)[c]
+                                                          - layer.pixel(x, y)[c] * scale.at(x, y));
+            });
+            add_window_figures(scratch, nthreads, noise, &mean_square);
+            for_each_pixel(average.region, nthreads, [&](int x, int y, size_t i) {
+                scratch.values.values[i] = finite_or_zero(average.pixel(x, y)[c]);
+            });
+            add_window_figures(scratch, nthreads, residual, nullptr);
+        }
+        most_relative_noise = relative_noise_spread * median_relative_noise(noise, average, roi);
+    }
+};
+
+/// |average|^2 at (x, y), summed over channels (non-finite values as 0).
+float level(const PixelBlock& average, int x, int y)
+{
+    const float* a = average.pixel(x, y);
+    float sum      = 0.0f;
+    for (int c = 0; c < average.nchannels; ++c)
+        sum += finite_or_zero(a[c]) * finite_or_zero(a[c]);
+    return sum;
+}
+
+float median_relative_noise(const Plane<float>& noise, const PixelBlock& average, const ROI& roi)
 {
     std::vector<float> ratios;
-    ratios.reserve(level.values.size());
-    for (size_t i = 0; i < level.values.size(); ++i)
-        if (level.values[i] > 0.0f)
-            ratios.push_back(noise.values[i] / level.values[i]);
+    ratios.reserve(plane_size(roi));
+    for (int y = roi.ybegin; y < roi.yend; ++y)
+        for (int x = roi.xbegin; x < roi.xend; ++x) {
+            const float l = level(average, x, y);
+            if (l > 0.0f)
+                ratios.push_back(noise.at(x, y) / l);
+        }
     if (ratios.empty())
         return 0.0f;
     const auto middle = ratios.begin() + std::ptrdiff_t(ratios.size() / 2);
     std::nth_element(ratios.begin(), middle, ratios.end());
     return *middle;
 }
-
-/// An average beside the values it averaged (times the split's scale),
-/// ready for `Figures` per pixel of `roi`.
-struct AverageFit {
-    Planes<float> diff;
-    Plane<float> window_noise;
-    Plane<float> level;
-    Plane<float> residual;
-    float most_relative_noise;
-
-    AverageFit(const PixelBlock& average, const PixelBlock& layer, const Plane<float>& scale,
-               const ROI& roi, int nthreads)
-        : diff(differences(average, layer, scale, nthreads))
-        , window_noise(roi)
-        , level(levels(average, roi, nthreads))
-        , residual(residual_noise(average, roi, nthreads))
-    {
-        const Planes<float> diff_var = window_variances(diff, nthreads);
-        for_each_pixel(roi, nthreads, [&](int x, int y, size_t i) {
-            window_noise.values[i] = noise_at(diff_var, x, y);
-        });
-        most_relative_noise = relative_noise_spread
-                              * median_relative_noise(window_noise, level);
-    }
-
-    Figures at(int x, int y, size_t i) const
-    {
-        const float s2 = std::min(window_noise.values[i], most_relative_noise * level.values[i]);
-        return { s2, std::min(residual.values[i], s2), mean_square_at(diff, x, y) };
-    }
-};
 
 }  // namespace
 
@@ -174,13 +120,23 @@ void back_off_layer(ImageBuf& result, const PixelBlock& average, const PixelBloc
     const AverageFit fit(average, layer, scale, roi, nthreads);
     const int nc = average.nchannels;
     error        = Plane<float>(roi);
-    for_each_pixel(roi, nthreads, [&](int x, int y, size_t i) {
-        const Figures f = fit.at(x, y, i);
-        const float a   = f.m2 > 0.0f ? std::clamp(1.0f - f.s2 / f.m2, 0.0f, 1.0f) : 0.0f;
-        float* out      = static_cast<float*>(result.pixeladdr(x, y));
-        for (int c = 0; c < nc; ++c)
-            out[c] -= a * *fit.diff.from(c, x, y);
-        error.values[i] = a * a * f.s2 + (1.0f - a) * (1.0f - a) * (f.bias2() + f.t2);
+    parallel_rows(roi, nthreads, [&](int y) {
+        float* out = static_cast<float*>(result.pixeladdr(roi.xbegin, y));
+        size_t i   = pixel_offset(roi, roi.xbegin, y);
+        for (int x = roi.xbegin; x < roi.xend; ++x, ++i, out += nc) {
+            const float s2 = std::min(fit.noise.at(x, y),
+                                      fit.most_relative_noise * level(average, x, y));
+            const float t2    = std::min(fit.residual.at(x, y), s2);
+            const float m2    = fit.mean_square.at(x, y);
+            const float bias2 = std::max(0.0f, m2 - s2);
+            const float a     = m2 > 0.0f ? std::clamp(1.0f - s2 / m2, 0.0f, 1.0f) : 0.0f;
+            const float* avg  = average.pixel(x, y);
+            const float* kept = layer.pixel(x, y);
+            const float s     = scale.at(x, y);
+            for (int c = 0; c < nc; ++c)
+                out[c] -= a * finite_or_zero(avg[c] - kept[c] * s);
+            error.values[i] = a * a * s2 + (1.0f - a) * (1.0f - a) * (bias2 + t2);
+        }
     });
 }
 

@@ -97,25 +97,28 @@ double share_out(double delta, std::vector<Share>& shares)
     return delta;
 }
 
-/// Scratch space for one row: the shares of a pixel's terms unbounded
-/// but for min(0, value), and the shares given out in one round.
+/// One row's scratch space: where each term's result row starts, the
+/// shares of a pixel's terms unbounded but for min(0, value), and the
+/// shares given out in one round.
 struct RowShares {
+    std::vector<float*> rows;
     std::vector<Share> terms;
     std::vector<Share> round;
 };
 
-/// Correct the terms at (x, y) (offset `i` into their error planes) so
-/// that their rebuild equals `b` in each of the `nc` channels: first
-/// within their noise, then what is left beyond it.
-void reconcile_pixel(const float* b, const std::vector<SumTerm>& terms, int x, int y, size_t i,
-                     int nc, RowShares& scratch)
+/// Correct the terms at (x, y) (offset `i` into their error planes, `dx`
+/// into their result rows) so that their rebuild equals `b` in each of the
+/// `nc` channels: first within their noise, then what is left beyond it.
+void reconcile_pixel(const float* b, const std::vector<SumTerm>& terms, int x, int y, int dx,
+                     size_t i, int nc, RowShares& scratch)
 {
     for (int c = 0; c < nc; ++c) {
         double rebuilt = 0.0;
         scratch.terms.clear();
         scratch.round.clear();
-        for (const SumTerm& t : terms) {
-            float* value       = static_cast<float*>(t.result->pixeladdr(x, y)) + c;
+        for (size_t k = 0; k < terms.size(); ++k) {
+            const SumTerm& t   = terms[k];
+            float* value       = scratch.rows[k] + dx * t.result->nchannels() + c;
             const float colour = colour_at(t, x, y, c);
             rebuilt += double(colour) * double(*value);
             if (!(colour > 0.0f) || !std::isfinite(*value))
@@ -151,13 +154,16 @@ void reconcile_sum(const ImageBuf& beauty, const PixelBlock& raw,
                         t.colour ? t.colour->nchannels : nc });
     parallel_rows(roi, nthreads, [&](int y) {
         RowShares scratch;
+        for (const SumTerm& t : terms)
+            scratch.rows.push_back(static_cast<float*>(t.result->pixeladdr(roi.xbegin, y)));
         scratch.terms.reserve(terms.size());
         scratch.round.reserve(terms.size());
-        size_t i = pixel_offset(roi, roi.xbegin, y);
+        const float* b = static_cast<const float*>(beauty.pixeladdr(roi.xbegin, y));
+        size_t i       = pixel_offset(roi, roi.xbegin, y);
         for (int x = roi.xbegin; x < roi.xend; ++x, ++i)
             if (rebuilds(raw, terms, x, y, nc))
-                reconcile_pixel(static_cast<const float*>(beauty.pixeladdr(x, y)), terms, x, y,
-                                i, nc, scratch);
+                reconcile_pixel(b + (x - roi.xbegin) * beauty.nchannels(), terms, x, y,
+                                x - roi.xbegin, i, nc, scratch);
     });
 }
 

@@ -18,7 +18,7 @@ namespace mcdenoise {
 /// One term of a rebuild of the beauty: a layer, times its colour pass
 /// when it has one.
 struct SumTerm {
-    OIIO::ImageBuf* result;        ///< the denoised layer, float, corrected in place
+    OIIO::ImageBuf* result;        ///< the denoised layer, float with local pixels, corrected in place
     const PixelBlock* raw;         ///< the layer as rendered, over the result's ROI or more
     const PixelBlock* colour;      ///< its colour pass over the same, or nullptr (1)
     const Plane<float>* error;     ///< the result's estimated error variance, over its ROI
