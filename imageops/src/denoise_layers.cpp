@@ -117,7 +117,7 @@ struct LayerResult {
 /// `layer`'s average (over the ROI grown by `backoff_reach`) backed off
 /// towards its kept values (`back_off_layer`) into `result`, over `roi`.
 bool back_off(ImageBuf& dst, const ImageBuf& layer, ImageBuf average, const Plane<float>& scale,
-              const ROI& roi, int nthreads, LayerResult& result)
+              const ROI& roi, int nthreads, BackoffPlanes& planes, LayerResult& result)
 {
     ROI read     = average.roi();
     read.chbegin = 0;
@@ -130,7 +130,7 @@ bool back_off(ImageBuf& dst, const ImageBuf& layer, ImageBuf average, const Plan
     }
     // `averaged` views the average's pixels, which a move keeps in place.
     result.image = within(std::move(average), roi, nthreads);
-    back_off_layer(result.image, averaged, result.raw, scale, nthreads, result.error);
+    back_off_layer(result.image, averaged, result.raw, scale, nthreads, planes, result.error);
     return true;
 }
 
@@ -229,10 +229,11 @@ bool layers_denoised(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Ima
     }
     out.specmod().attribute("mcdenoise:denoise_guides", denoise_guide_names(guides));
     std::vector<LayerResult> results(layers.size());
+    BackoffPlanes planes;
     for (size_t i = 0; i < layers.size(); ++i) {
         if (own_noise
             && !back_off(dst, *layers[i], std::move(averages[i]), scales.scale, roi, nthreads,
-                         results[i]))
+                         planes, results[i]))
             return false;
         if (!own_noise)
             results[i].image = within(std::move(averages[i]), roi, nthreads);

@@ -34,19 +34,42 @@ void window_variances(const float* in, const ROI& in_region, const ROI& out_regi
                     square[size_t(i)] += v * v;
                 }
             }
-            size_t o = pixel_offset(out_region, out_region.xbegin, y);
-            for (int x = out_region.xbegin; x < out_region.xend; ++x, ++o) {
+            // pixels whose window is not clipped in x: three columns each
+            const int inner_begin = std::max(out_region.xbegin, bounds.xbegin + 1);
+            const int inner_end   = std::max(inner_begin, std::min(out_region.xend, bounds.xend - 1));
+            const size_t row      = pixel_offset(out_region, out_region.xbegin, y);
+            const auto put = [&](int x, double s, double q, int n) {
+                const size_t o = row + size_t(x - out_region.xbegin);
+                variance[o]    = n > 1 ? float(std::max(0.0, q - s * s / n) / (n - 1)) : 0.0f;
+                if (mean_square)
+                    mean_square[o] = float(q / n);
+            };
+            const auto clipped = [&](int x) {
                 const Span xs = clip_window(x, 1, bounds.xbegin, bounds.xend);
                 double s = 0.0, q = 0.0;
                 for (int qx = xs.begin; qx < xs.end; ++qx) {
                     s += sum[size_t(qx - cols.begin)];
                     q += square[size_t(qx - cols.begin)];
                 }
-                const int n = xs.size() * ys.size();
-                variance[o] = n > 1 ? float(std::max(0.0, q - s * s / n) / (n - 1)) : 0.0f;
-                if (mean_square)
-                    mean_square[o] = float(q / n);
+                put(x, s, q, xs.size() * ys.size());
+            };
+            for (int x = out_region.xbegin; x < inner_begin; ++x)
+                clipped(x);
+            const int n            = 3 * ys.size();
+            const double* s_at     = sum.data() + (inner_begin - cols.begin);
+            const double* q_at     = square.data() + (inner_begin - cols.begin);
+            float* var_out         = variance + row + size_t(inner_begin - out_region.xbegin);
+            float* square_out      = mean_square ? mean_square + row + size_t(inner_begin - out_region.xbegin)
+                                                 : nullptr;
+            for (int i = 0; i < inner_end - inner_begin; ++i) {
+                const double s = s_at[i - 1] + s_at[i] + s_at[i + 1];
+                const double q = q_at[i - 1] + q_at[i] + q_at[i + 1];
+                var_out[i]     = float(std::max(0.0, q - s * s / n) / (n - 1));
+                if (square_out)
+                    square_out[i] = float(q / n);
             }
+            for (int x = inner_end; x < out_region.xend; ++x)
+                clipped(x);
         }
     });
 }
@@ -67,14 +90,17 @@ void smallest_in_windows(const float* in, const ROI& region, int nthreads, float
                 for (int i = 0; i < region.width(); ++i)
                     column[size_t(i)] = std::min(column[size_t(i)], row[i]);
             }
-            float* dst = out + pixel_offset(region, region.xbegin, y);
-            for (int i = 0; i < region.width(); ++i) {
-                const Span xs = clip_window(i, 1, 0, region.width());
-                float smallest = column[size_t(xs.begin)];
-                for (int q = xs.begin + 1; q < xs.end; ++q)
-                    smallest = std::min(smallest, column[size_t(q)]);
-                dst[i] = smallest;
+            float* dst  = out + pixel_offset(region, region.xbegin, y);
+            const int w = region.width();
+            if (w == 1) {
+                dst[0] = column[0];
+                continue;
             }
+            dst[0] = std::min(column[0], column[1]);
+            for (int i = 1; i < w - 1; ++i)
+                dst[i] = std::min(std::min(column[size_t(i - 1)], column[size_t(i)]),
+                                  column[size_t(i + 1)]);
+            dst[w - 1] = std::min(column[size_t(w - 2)], column[size_t(w - 1)]);
         }
     });
 }
