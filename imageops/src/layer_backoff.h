@@ -28,15 +28,14 @@ constexpr float relative_noise_spread = 9.0f;
 /// selection over every pixel.
 constexpr int median_stride = 4;
 
-/// The planes `back_off_layer` works in, over the average's region: kept
-/// from one layer to the next, so that each layer does not allocate them
-/// (and the system clear their pages) afresh.
+/// The planes `back_off_layer` works in, over the ROI: kept from one layer
+/// to the next, so that each layer does not allocate them (and the system
+/// clear their pages) afresh.
 struct BackoffPlanes {
     Plane<float> noise;        ///< s2 from the windows alone, summed over channels
     Plane<float> residual;     ///< the same estimate of the average's own values
     Plane<float> mean_square;  ///< m2
     Plane<float> level;        ///< |average|^2
-    Plane<float> diff, values, variance, window_mean_square, smallest;  ///< one channel's
 };
 
 /// Back the average of one layer off towards its kept values, over the

@@ -21,55 +21,21 @@ void window_variances(const float* in, const ROI& in_region, const ROI& out_regi
     rows.chbegin = 0;
     rows.chend   = 1;
     OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
-        std::vector<double> sum(size_t(cols.size())), square(size_t(cols.size()));
+        ColumnSums sums(cols);
         for (int y = strip.ybegin; y < strip.yend; ++y) {
             const Span ys = clip_window(y, 1, bounds.ybegin, bounds.yend);
-            std::fill(sum.begin(), sum.end(), 0.0);
-            std::fill(square.begin(), square.end(), 0.0);
-            for (int qy = ys.begin; qy < ys.end; ++qy) {
-                const float* row = in + pixel_offset(in_region, cols.begin, qy);
-                for (int i = 0; i < cols.size(); ++i) {
-                    const double v = row[i];
-                    sum[size_t(i)] += v;
-                    square[size_t(i)] += v * v;
-                }
-            }
-            // pixels whose window is not clipped in x: three columns each
-            const int inner_begin = std::max(out_region.xbegin, bounds.xbegin + 1);
-            const int inner_end   = std::max(inner_begin, std::min(out_region.xend, bounds.xend - 1));
-            const size_t row      = pixel_offset(out_region, out_region.xbegin, y);
-            const auto put = [&](int x, double s, double q, int n) {
-                const size_t o = row + size_t(x - out_region.xbegin);
-                variance[o]    = n > 1 ? float(std::max(0.0, q - s * s / n) / (n - 1)) : 0.0f;
-                if (mean_square)
-                    mean_square[o] = float(q / n);
-            };
-            const auto clipped = [&](int x) {
-                const Span xs = clip_window(x, 1, bounds.xbegin, bounds.xend);
-                double s = 0.0, q = 0.0;
-                for (int qx = xs.begin; qx < xs.end; ++qx) {
-                    s += sum[size_t(qx - cols.begin)];
-                    q += square[size_t(qx - cols.begin)];
-                }
-                put(x, s, q, xs.size() * ys.size());
-            };
-            for (int x = out_region.xbegin; x < inner_begin; ++x)
-                clipped(x);
-            const int n            = 3 * ys.size();
-            const double* s_at     = sum.data() + (inner_begin - cols.begin);
-            const double* q_at     = square.data() + (inner_begin - cols.begin);
-            float* var_out         = variance + row + size_t(inner_begin - out_region.xbegin);
-            float* square_out      = mean_square ? mean_square + row + size_t(inner_begin - out_region.xbegin)
-                                                 : nullptr;
-            for (int i = 0; i < inner_end - inner_begin; ++i) {
-                const double s = s_at[i - 1] + s_at[i] + s_at[i + 1];
-                const double q = q_at[i - 1] + q_at[i] + q_at[i + 1];
-                var_out[i]     = float(std::max(0.0, q - s * s / n) / (n - 1));
-                if (square_out)
-                    square_out[i] = float(q / n);
-            }
-            for (int x = inner_end; x < out_region.xend; ++x)
-                clipped(x);
+            sums.clear();
+            for (int qy = ys.begin; qy < ys.end; ++qy)
+                sums.add_row(in + pixel_offset(in_region, cols.begin, qy));
+            const size_t row = pixel_offset(out_region, out_region.xbegin, y);
+            window_row(sums, { out_region.xbegin, out_region.xend }, bounds.xbegin, bounds.xend,
+                       [&](int x, double s, double q, int columns) {
+                           const int n    = columns * ys.size();
+                           const size_t o = row + size_t(x - out_region.xbegin);
+                           variance[o]    = sample_variance(s, q, n);
+                           if (mean_square)
+                               mean_square[o] = float(q / n);
+                       });
         }
     });
 }

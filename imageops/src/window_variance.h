@@ -11,6 +11,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace mcdenoise {
 
@@ -23,6 +24,66 @@ void for_each_pixel(const OIIO::ROI& region, int nthreads, Fn&& fn)
         for (int x = region.xbegin; x < region.xend; ++x, ++i)
             fn(x, y, i);
     });
+}
+
+/// The sample variance (divided by n - 1, 0 for n <= 1) of n values
+/// whose sum and sum of squares are given.
+inline float sample_variance(double sum, double square, int n)
+{
+    return n > 1 ? float(std::max(0.0, square - sum * sum / n) / (n - 1)) : 0.0f;
+}
+
+/// Per column of `reads`, the sum and the sum of squares of the rows added
+/// since `clear`: one row of windows' column sums, in double.
+struct ColumnSums {
+    Span reads;
+    std::vector<double> sum, square;
+
+    explicit ColumnSums(Span reads_)
+        : reads(reads_), sum(size_t(reads_.size())), square(size_t(reads_.size()))
+    {
+    }
+    void clear()
+    {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(square.begin(), square.end(), 0.0);
+    }
+    /// Add a row of values, one per column of `reads`.
+    void add_row(const float* row)
+    {
+        for (size_t i = 0; i < sum.size(); ++i) {
+            const double v = row[i];
+            sum[i] += v;
+            square[i] += v * v;
+        }
+    }
+};
+
+/// For every x of `out`, `put(x, s, q, columns)` with the sums over the 3
+/// columns around x clipped to [lo, hi) (all within `sums.reads`); the
+/// columns whose window is not clipped take a loop without clipping.
+template<class Put>
+void window_row(const ColumnSums& sums, Span out, int lo, int hi, Put&& put)
+{
+    const auto clipped = [&](int x) {
+        const Span xs = clip_window(x, 1, lo, hi);
+        double s = 0.0, q = 0.0;
+        for (int qx = xs.begin; qx < xs.end; ++qx) {
+            s += sums.sum[size_t(qx - sums.reads.begin)];
+            q += sums.square[size_t(qx - sums.reads.begin)];
+        }
+        put(x, s, q, xs.size());
+    };
+    const int inner_begin = std::max(out.begin, lo + 1);
+    const int inner_end   = std::max(inner_begin, std::min(out.end, hi - 1));
+    for (int x = out.begin; x < std::min(inner_begin, out.end); ++x)
+        clipped(x);
+    const double* s = sums.sum.data() + (inner_begin - sums.reads.begin);
+    const double* q = sums.square.data() + (inner_begin - sums.reads.begin);
+    for (int i = 0; i < inner_end - inner_begin; ++i)
+        put(inner_begin + i, s[i - 1] + s[i] + s[i + 1], q[i - 1] + q[i] + q[i + 1], 3);
+    for (int x = std::max(out.begin, inner_end); x < out.end; ++x)
+        clipped(x);
 }
 
 /// Per pixel of `out_region`, the sample variance (divided by n - 1, 0
