@@ -1,7 +1,8 @@
 // test_layer_sums.cpp: reconcile_sum on hand-computed one-pixel cases:
-// the difference shared in proportion to colour^2 x error, within each
-// term's noise first, never below zero, divided by a term's colour, and
-// nothing changed where the raw terms do not rebuild the raw beauty.
+// the difference shared in proportion to colour^2 x error within each
+// term's noise, the rest by each term's part of the rebuild, never below
+// zero, divided by a term's colour, and nothing changed where the raw
+// terms do not rebuild the raw beauty.
 #include "layer_sums.h"
 
 #include <gtest/gtest.h>
@@ -79,7 +80,8 @@ TEST(ReconcileSum, TheDifferenceGoesInProportionToEachTermsError)
 TEST(ReconcileSum, WithinEachTermsNoiseFirstThenBeyond)
 {
     // delta 8, errors 1 and 1 (reach 2 each): first round +2 and +2 (the
-    // shares of 4 stop at the reach), then the 4 left equally: +4 and +4
+    // shares of 4 stop at the reach), then the 4 left by their parts of
+    // the rebuild, 3 : 3: +2 and +2
     Terms t({ 1, 1 }, { 1, 1 }, { 1, 1 });
     t.reconcile(10, 2);
     EXPECT_FLOAT_EQ(t[0], 5.0f);
@@ -90,6 +92,16 @@ TEST(ReconcileSum, WithinEachTermsNoiseFirstThenBeyond)
     u.reconcile(5, 4);
     EXPECT_FLOAT_EQ(u[0], 3.0f);
     EXPECT_FLOAT_EQ(u[1], 2.0f);
+}
+
+TEST(ReconcileSum, BeyondTheirNoiseTheTermsTakeTheRestByTheirPartOfTheRebuild)
+{
+    // delta 12 - 8 = 4, errors 0.01 (reach 0.2 each): first +0.2 each,
+    // then the 3.6 left by 6.2 : 2.2, a gain on the rebuild
+    Terms t({ 6, 2 }, { 6, 2 }, { 0.01f, 0.01f });
+    t.reconcile(12, 8);
+    EXPECT_NEAR(t[0], 6.2 + 3.6 * 6.2 / 8.4, 1e-5);
+    EXPECT_NEAR(t[1], 2.2 + 3.6 * 2.2 / 8.4, 1e-5);
 }
 
 TEST(ReconcileSum, NoTermIsPushedBelowZero)

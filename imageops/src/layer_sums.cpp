@@ -98,8 +98,8 @@ double share_out(double delta, std::vector<Share>& shares)
 }
 
 /// One row's scratch space: where each term's result row starts, the
-/// shares of a pixel's terms unbounded but for min(0, value), and the
-/// shares given out in one round.
+/// shares of a pixel's terms unbounded but for min(0, value) and weighted
+/// by their part of the rebuild, and the shares given out in one round.
 struct RowShares {
     std::vector<float*> rows;
     std::vector<Share> terms;
@@ -127,7 +127,9 @@ void reconcile_pixel(const float* b, const std::vector<SumTerm>& terms, int x, i
             const Share share { value, colour, colour * colour * error, std::min(0.0f, *value),
                                 HUGE_VALF };
             const float reach = share_reach * std::sqrt(error) / colour;
+            // beyond the noise, shares by each term's part of the rebuild
             scratch.terms.push_back(share);
+            scratch.terms.back().weight = 0.0f;
             scratch.round.push_back(share);
             scratch.round.back().low  = std::max(share.low, *value - reach);
             scratch.round.back().high = *value + reach;

@@ -43,10 +43,12 @@ constexpr float share_reach = 2.0f;
 /// that is 0 too), each share divided by the term's colour; a term whose colour is
 /// 0 takes none. First no term moves further than `share_reach` standard
 /// deviations of its error (a move its own noise explains), nor below
-/// min(0, its value), the rest going to the others; what they cannot take
-/// within their noise is then shared the same way with min(0, value) the
-/// only bound. What none can take stays (only where the beauty is below
-/// every term's floor).
+/// min(0, its value), the rest going to the others. What they cannot take
+/// within their noise is the beauty's own error more than theirs; it is
+/// shared in proportion to each term's part of the rebuild, |colour x
+/// value| (a gain on the rebuild), with min(0, value) the only bound.
+/// What none can take stays (only where the beauty is below every term's
+/// floor).
 void reconcile_sum(const OIIO::ImageBuf& beauty, const PixelBlock& raw,
                    const std::vector<SumTerm>& terms, int nthreads);
 

@@ -49,9 +49,10 @@ struct LayerTerm {
 ///    denoised layers is shared among them in proportion to colour^2 x
 ///    their estimated error, a^2 s2 + (1 - a)^2 (max(0, m2 - s2) + t2)
 ///    (t2 the same noise estimate of the average), each share divided by
-///    the layer's colour: first moving no layer by more than 2 standard
-///    deviations of that error, then the rest beyond, never pushing a layer
-///    below min(0, its value).
+///    the layer's colour, moving no layer by more than 2 standard
+///    deviations of that error; the rest (the beauty's own error more than
+///    the layers' noise) in proportion to each layer's part of the rebuild,
+///    |colour x value|. No layer is pushed below min(0, its value).
 ///
 /// The beauty's result is bit-identical to `denoise(beauty, guides)`.
 /// Premultiplied colour and alpha share the weights, which are
