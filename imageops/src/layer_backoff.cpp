@@ -79,22 +79,14 @@ public:
         std::fill(residual, residual + width, 0.0f);
         for (int q = 0; q < 2 * m_nc; ++q) {
             // the smallest over the window's rows, then over its columns
-            const float* first = variance_row(q, ys.begin);
-            std::copy(first, first + m_cols.size(), m_smallest.begin());
-            for (int r = ys.begin + 1; r < ys.end; ++r) {
-                const float* v = variance_row(q, r);
-                for (size_t i = 0; i < m_smallest.size(); ++i)
-                    m_smallest[i] = std::min(m_smallest[i], v[i]);
-            }
+            smallest_of_rows(
+                ys.size(), m_cols.size(), [&](int k) { return variance_row(q, ys.begin + k); },
+                m_smallest.data());
             float* sum = q < m_nc ? noise : residual;
-            for (int k = 0; k < width; ++k) {
-                const int x    = m_roi_cols.begin + k;
-                const Span xs  = clip_window(x, 1, m_g.xbegin, m_g.xend);
-                float smallest = m_smallest[size_t(xs.begin - m_cols.begin)];
-                for (int qx = xs.begin + 1; qx < xs.end; ++qx)
-                    smallest = std::min(smallest, m_smallest[size_t(qx - m_cols.begin)]);
-                sum[k] += smallest / smallest_window_bias;
-            }
+            window_minima(m_smallest.data(), m_cols, m_roi_cols, m_g.xbegin, m_g.xend,
+                          [&](int x, float m) {
+                              sum[x - m_roi_cols.begin] += m / smallest_window_bias;
+                          });
         }
         const float* squares = variance_row(2 * m_nc, y) + (m_roi_cols.begin - m_cols.begin);
         std::copy(squares, squares + width, mean_square);
@@ -142,18 +134,18 @@ private:
                 m_e_sums.add_row(m_e.data());
                 m_a_sums.add_row(m_a.data());
             }
-            float* e_row   = variance_row(c, r) - m_cols.begin;
-            float* a_row   = variance_row(m_nc + c, r) - m_cols.begin;
-            float* squares = square_row - m_cols.begin;
+            float* e_row = variance_row(c, r);
+            float* a_row = variance_row(m_nc + c, r);
             window_row(m_e_sums, m_cols, m_g.xbegin, m_g.xend,
                        [&](int x, double sum, double square, int columns) {
-                           const int n = columns * ys.size();
-                           e_row[x]    = sample_variance(sum, square, n);
-                           squares[x] += float(square / n);
+                           const int n    = columns * ys.size();
+                           const size_t o = size_t(x - m_cols.begin);
+                           e_row[o]       = sample_variance(sum, square, n);
+                           square_row[o] += float(square / n);
                        });
             window_row(m_a_sums, m_cols, m_g.xbegin, m_g.xend,
                        [&](int x, double sum, double square, int columns) {
-                           a_row[x] = sample_variance(sum, square, columns * ys.size());
+                           a_row[x - m_cols.begin] = sample_variance(sum, square, columns * ys.size());
                        });
         }
     }

@@ -2,6 +2,7 @@
 // beauty where the raw layers rebuilt the raw beauty.
 #include "layer_sums.h"
 
+#include "feature_field.h"
 #include "window.h"
 
 #include <algorithm>
@@ -13,8 +14,6 @@ using OIIO::ImageBuf;
 using OIIO::ROI;
 
 namespace {
-
-constexpr int max_colour_channels = 3;
 
 /// Term `t`'s colour at (x, y), channel c: 1 without a colour pass.
 float colour_at(const SumTerm& t, int x, int y, int c)
@@ -150,7 +149,7 @@ void reconcile_sum(const ImageBuf& beauty, const PixelBlock& raw,
     if (terms.empty())
         return;
     const ROI roi = terms.front().result->roi();
-    int nc        = std::min({ max_colour_channels, raw.nchannels, beauty.nchannels() });
+    int nc        = std::min(raw.nchannels, colour_channels(beauty.nchannels()));
     for (const SumTerm& t : terms)
         nc = std::min({ nc, t.result->nchannels(), t.raw->nchannels,
                         t.colour ? t.colour->nchannels : nc });

@@ -47,26 +47,16 @@ void smallest_in_windows(const float* in, const ROI& region, int nthreads, float
     rows.chend   = 1;
     OIIO::ImageBufAlgo::parallel_image(rows, nthreads, [&](ROI strip) {
         std::vector<float> column(size_t(region.width()));
+        const Span columns = { region.xbegin, region.xend };
         for (int y = strip.ybegin; y < strip.yend; ++y) {
             const Span ys = clip_window(y, 1, region.ybegin, region.yend);
-            const float* first = in + pixel_offset(region, region.xbegin, ys.begin);
-            std::copy(first, first + region.width(), column.begin());
-            for (int qy = ys.begin + 1; qy < ys.end; ++qy) {
-                const float* row = in + pixel_offset(region, region.xbegin, qy);
-                for (int i = 0; i < region.width(); ++i)
-                    column[size_t(i)] = std::min(column[size_t(i)], row[i]);
-            }
-            float* dst  = out + pixel_offset(region, region.xbegin, y);
-            const int w = region.width();
-            if (w == 1) {
-                dst[0] = column[0];
-                continue;
-            }
-            dst[0] = std::min(column[0], column[1]);
-            for (int i = 1; i < w - 1; ++i)
-                dst[i] = std::min(std::min(column[size_t(i - 1)], column[size_t(i)]),
-                                  column[size_t(i + 1)]);
-            dst[w - 1] = std::min(column[size_t(w - 2)], column[size_t(w - 1)]);
+            smallest_of_rows(
+                ys.size(), region.width(),
+                [&](int r) { return in + pixel_offset(region, region.xbegin, ys.begin + r); },
+                column.data());
+            float* dst = out + pixel_offset(region, region.xbegin, y);
+            window_minima(column.data(), columns, columns, region.xbegin, region.xend,
+                          [&](int x, float m) { dst[x - region.xbegin] = m; });
         }
     });
 }

@@ -86,6 +86,36 @@ void window_row(const ColumnSums& sums, Span out, int lo, int hi, Put&& put)
         clipped(x);
 }
 
+/// Into `smallest`, per column, the smallest of `rows` rows of `width`
+/// values each, the row r starting at `row(r)` (r from 0).
+template<class Row>
+void smallest_of_rows(int rows, int width, Row&& row, float* smallest)
+{
+    const float* first = row(0);
+    std::copy(first, first + width, smallest);
+    for (int r = 1; r < rows; ++r) {
+        const float* values = row(r);
+        for (int i = 0; i < width; ++i)
+            smallest[i] = std::min(smallest[i], values[i]);
+    }
+}
+
+/// For every x of `out`, `put(x, m)` with m the smallest of `column` (one
+/// value per column of `columns`) over the 3 columns around x clipped to
+/// [lo, hi) (all within `columns`).
+template<class Put>
+void window_minima(const float* column, Span columns, Span out, int lo, int hi, Put&& put)
+{
+    for (int x = out.begin; x < out.end; ++x) {
+        const Span xs  = clip_window(x, 1, lo, hi);
+        const float* c = column + (xs.begin - columns.begin);
+        float m        = c[0];
+        for (int i = 1; i < xs.size(); ++i)
+            m = std::min(m, c[i]);
+        put(x, m);
+    }
+}
+
 /// Per pixel of `out_region`, the sample variance (divided by n - 1, 0
 /// for n == 1) of `in` over the 3x3 window around it, clipped to `bounds`,
 /// into `variance` (a plane over `out_region`); with `mean_square`, the
