@@ -29,9 +29,9 @@ TEST(TemporalQuality, CameraMoveN2WithMotion)
 {
     const testimg::ShotFigures f = testimg::truck_figures(dir());
     ASSERT_TRUE(f.error.empty()) << f.error;
-    // measured: relMSE 0.61x, temporal error 0.61x, disoccluded 0.67x of per-frame
-    EXPECT_LT(f.cross.rel_mse, 0.65 * f.per_frame.rel_mse);
-    EXPECT_LT(f.cross.temporal, 0.65 * f.per_frame.temporal);
+    // measured: relMSE 0.60x, temporal error 0.59x, disoccluded 0.66x of per-frame
+    EXPECT_LT(f.cross.rel_mse, 0.63 * f.per_frame.rel_mse);
+    EXPECT_LT(f.cross.temporal, 0.62 * f.per_frame.temporal);
     EXPECT_LT(f.cross.region, 1.1 * f.per_frame.region) << "disoccluded pixels";
     for (size_t i = 0; i < f.evaluated.size(); ++i)
         EXPECT_LT(f.cross.frame_rel_mse[i], f.per_frame.frame_rel_mse[i])

@@ -1,6 +1,6 @@
 // frame_warp.cpp: the motion-chained path from a pixel of the centre frame
 // to a neighbour frame, the map of those paths, and the planes carried
-// along them.
+// along them, with where the carried colour is faithful to the source's.
 #include "frame_warp.h"
 
 #include "guides.h"
@@ -161,6 +161,58 @@ void sample(const std::vector<LargeVector<float>>& src, std::vector<LargeVector<
     }
 }
 
+// How many standard deviations of the source's noise the estimated
+// resampling error of a carried pixel may reach for it to count as
+// faithful (`CarriedFrame::faithful`): a neighbour that errs by that much
+// raises the spread it joins by at most a quarter of its variance.
+constexpr float faithful_error_sigmas = 0.5f;
+
+// Whether the bilinear sample at `s` of every plane of `colour` (over
+// `from`) is within `faithful_error_sigmas` of the noise of the cell's
+// pixels (the mean of their `variance`): in each plane the interpolation
+// error tx (1 - tx) / 2 |f_xx| + ty (1 - ty) / 2 |f_yy|, exact for a
+// quadratic, f_xx the larger of the cell's two columns' second
+// differences along x (each the mean over the cell's two rows), f_yy
+// alike; false where the 4x4 pixels around the point leave `from`.
+bool resampled_within_noise(const Source& s, const ROI& from,
+                            const std::vector<LargeVector<float>>& colour,
+                            const std::vector<LargeVector<float>>& variance)
+{
+    const int bx = s.qx + (s.dx < 0.0f ? -1 : 0), by = s.qy + (s.dy < 0.0f ? -1 : 0);
+    if (!inside(from, bx - 1, by - 1) || !inside(from, bx + 2, by + 2))
+        return false;
+    const float tx = s.dx < 0.0f ? 1.0f + s.dx : s.dx, ty = s.dy < 0.0f ? 1.0f + s.dy : s.dy;
+    const float cx = 0.5f * tx * (1.0f - tx), cy = 0.5f * ty * (1.0f - ty);
+    const float allowed = faithful_error_sigmas * faithful_error_sigmas;
+    // The 4x4 pixels from (bx - 1, by - 1), row by row.
+    const size_t corner = pixel_offset(from, bx - 1, by - 1), row = size_t(from.width());
+    size_t at[4][4];
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i)
+            at[j][i] = corner + size_t(j) * row + size_t(i);
+    for (size_t c = 0; c < colour.size(); ++c) {
+        const float* v  = colour[c].data();
+        const float* vv = variance[c].data();
+        float fxx = 0.0f, fyy = 0.0f, mean_variance = 0.0f;
+        for (int i = 1; i <= 2; ++i) {
+            // Column i along x and row i along y, each over the cell's two
+            // rows (columns).
+            float sx = 0.0f, sy = 0.0f;
+            for (int j = 1; j <= 2; ++j) {
+                sx += v[at[j][i - 1]] - 2.0f * v[at[j][i]] + v[at[j][i + 1]];
+                sy += v[at[i - 1][j]] - 2.0f * v[at[i][j]] + v[at[i + 1][j]];
+                mean_variance += 0.25f * vv[at[j][i]];
+            }
+            fxx = std::max(fxx, std::abs(0.5f * sx));
+            fyy = std::max(fyy, std::abs(0.5f * sy));
+        }
+        const float error = cx * fxx + cy * fyy;
+        if (!(error * error <= allowed * mean_variance))
+            return false;
+    }
+    return true;
+}
+
 // Planes shaped as `src`'s (with its finite mask if any) over `region`.
 Planes<float> planes_like(const Planes<float>& src, const ROI& region)
 {
@@ -232,10 +284,13 @@ CarriedFrame carry_frame(const FeatureInputs& src, const Planes<float>& excess,
             if (ids)
                 out.features.ids.values[oc] = s.ok ? src.features.ids.values[q] : no_guide_id;
             out.usable.values[oc]   = s.ok ? 1.0f : 0.0f;
-            out.in_place.values[oc] = s.ok && s.qx == x && s.qy == y && s.dx == 0.0f
-                                              && s.dy == 0.0f
-                                          ? 1.0f
-                                          : 0.0f;
+            const bool in_place = s.qx == x && s.qy == y && s.dx == 0.0f && s.dy == 0.0f;
+            const bool faithful = s.ok
+                                  && (in_place
+                                      || resampled_within_noise(s, source_dw,
+                                                                src.colour.colour.values,
+                                                                src.variance.colour.values));
+            out.faithful.values[oc] = faithful ? 1.0f : 0.0f;
             sample(src.colour.colour.values, out.colour.colour.values, oc, t, false);
             sample(src.colour.colour.finite, out.colour.colour.finite, oc, t, false);
             if (inside(regions.variance, x, y)) {

@@ -72,9 +72,13 @@ struct CarriedFrame {
     FeatureField features;  ///< over the colour region
     Planes<float> values;   ///< every channel and its finite mask, over the window
     Plane<float> usable;    ///< over the colour region: 1 where the pixel has a source, else 0
-    /// Over the colour region: 1 where the source is the same pixel, not
-    /// moved (nothing resampled), else 0.
-    Plane<float> in_place;
+    /// Over the colour region: 1 where the carried colour is the source's
+    /// within a fraction of its noise, else 0: the source is the same
+    /// pixel, not moved (nothing resampled), or the bilinear sample's
+    /// error, estimated from the second differences of the 4x4 source
+    /// pixels around the point (exact for a quadratic), is at most half the
+    /// standard deviation of the cell's pixels in every colour channel.
+    Plane<float> faithful;
     Planes<float> excess;   ///< the frame's excess given out, over the window
 };
 

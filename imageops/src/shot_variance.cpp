@@ -52,7 +52,7 @@ void box_mean(Value&& value, const ROI& region, const ROI& dw, int nthreads, Pla
 // Whether each neighbour agrees with the centre at each pixel of `region`
 // (1 or 0), one plane per neighbour.
 std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
-                                    const std::vector<const Plane<float>*>& in_place,
+                                    const std::vector<const Plane<float>*>& faithful,
                                     const ROI& region, const ROI& dw, int nthreads)
 {
     const NlmFrame& centre = frames[0];
@@ -72,7 +72,7 @@ std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
     std::vector<Plane<float>> out;
     for (size_t k = 1; k < frames.size(); ++k) {
         const NlmFrame& f       = frames[k];
-        const Plane<float>& put = *in_place[k - 1];
+        const Plane<float>& put = *faithful[k - 1];
         Plane<float> apart(region, 0.0f);
         for (int c = 0; c < nc; ++c) {
             box_mean([&](int x, int y) {
@@ -104,10 +104,10 @@ std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
 }  // namespace
 
 std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
-                                         const std::vector<const Plane<float>*>& in_place,
+                                         const std::vector<const Plane<float>*>& faithful,
                                          const ROI& region, const ROI& dw, int nthreads)
 {
-    const bool any = std::any_of(in_place.begin(), in_place.end(), [](const Plane<float>* p) {
+    const bool any = std::any_of(faithful.begin(), faithful.end(), [](const Plane<float>* p) {
         return std::any_of(p->values.begin(), p->values.end(), [](float v) { return v > 0.0f; });
     });
     std::vector<VarianceField> out;
@@ -115,7 +115,7 @@ std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
         return out;
     const int nc  = frames[0].colour->nchannels();
     const auto lw = luminance_weights(nc);
-    const std::vector<Plane<float>> agrees = agreement(frames, in_place, region, dw, nthreads);
+    const std::vector<Plane<float>> agrees = agreement(frames, faithful, region, dw, nthreads);
     for (size_t k = 0; k < frames.size(); ++k)
         out.push_back({ Planes<float>(region, nc), Plane<float>(region) });
     parallel_rows(region, nthreads, [&](int y) {

@@ -16,8 +16,9 @@ constexpr int agreement_radius = 3;
 /// Each frame's variance (`frames[k].variance`) over `region`, raised at
 /// each pixel to the sample variance of the colours of the frames that
 /// agree with the centre (`frames[0]`) there, when three or more do. A
-/// neighbour agrees where it was carried in place (`in_place`), its
-/// features match the centre's (feature weight, as features.h weighs them,
+/// neighbour agrees where it was carried faithfully (`faithful`: in place,
+/// or resampled with an error well within its noise), its features match
+/// the centre's (feature weight, as features.h weighs them,
 /// at least 1/4) and its mean colour over the
 /// (2 agreement_radius + 1)^2 box (clipped to `dw`) is within
 /// `agreement_sigmas` standard deviations of the centre's, the variance of
@@ -28,12 +29,13 @@ constexpr int agreement_radius = 3;
 /// out, while a cluster of rare bright samples the pixel filter spread
 /// over a few pixels counts. Every frame's colour and
 /// features must cover `region` grown by `agreement_radius` (clipped to
-/// `dw`), the centre's variance too; `in_place[k]` (1 where frame k + 1 was
-/// carried without resampling) the region. Where nothing can agree (fewer
-/// than three frames, or no neighbour in place anywhere in the planes:
-/// a moving camera) the result is empty: the frames' own variances stand.
+/// `dw`), the centre's variance too; `faithful[k]` (1 where frame k + 1 was
+/// carried faithfully, `CarriedFrame::faithful`) the region. Where nothing
+/// can agree (fewer than three frames, or no neighbour carried faithfully
+/// anywhere in the planes) the result is empty: the frames' own variances
+/// stand.
 std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
-                                         const std::vector<const Plane<float>*>& in_place,
+                                         const std::vector<const Plane<float>*>& faithful,
                                          const OIIO::ROI& region, const OIIO::ROI& dw,
                                          int nthreads);
 

@@ -182,11 +182,11 @@ void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& ca
     for (const CarriedFrame& n : carried)
         frames.push_back({ &n.colour, &n.variance, &n.features, &c.features, &n.values,
                            &n.usable, radius, false });
-    std::vector<const Plane<float>*> in_place;
+    std::vector<const Plane<float>*> faithful;
     for (const CarriedFrame& n : carried)
-        in_place.push_back(&n.in_place);
+        faithful.push_back(&n.faithful);
     const std::vector<VarianceField> variances
-        = shot_variance(frames, in_place, regions(band, dw).variance, dw, nthreads);
+        = shot_variance(frames, faithful, regions(band, dw).variance, dw, nthreads);
     for (size_t k = 0; k < variances.size(); ++k)
         frames[k].variance = &variances[k];
     // The patches and features every candidate is compared with: the
