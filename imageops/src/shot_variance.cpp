@@ -23,82 +23,133 @@ constexpr float correlated_pixels = 2.0f;
 /// The feature weight (features.h) a neighbour's pixel needs to count.
 constexpr float min_feature_weight = 0.25f;
 
-// The mean of `value(x, y)` over the box of `agreement_radius` around each
-// pixel of `region`, clipped to `dw`, into `out` (over `region`).
-template<class Value>
-void box_mean(Value&& value, const ROI& region, const ROI& dw, int nthreads, Plane<float>& out)
-{
-    const ROI cols = grow_and_clip(region, agreement_radius, dw);
-    parallel_rows(region, nthreads, [&](int y) {
-        const Span ys = clip_window(y, agreement_radius, dw.ybegin, dw.yend);
-        const float rows = float(ys.end - ys.begin);
-        std::vector<float> column(size_t(cols.width()));
-        for (int x = cols.xbegin; x < cols.xend; ++x) {
-            float sum = 0.0f;
-            for (int qy = ys.begin; qy < ys.end; ++qy)
-                sum += value(x, qy);
-            column[size_t(x - cols.xbegin)] = sum / rows;
+// The boxes of agreement_radius around the pixels of one row y of
+// `region`, clipped to the data window `dw`, and the sums they are made
+// of: the columns' sums over the box's rows, then their running sums
+// along the row (in double), so a box's sum costs two reads whatever the
+// radius.
+struct RowBoxes {
+    ROI cols;  ///< the columns the boxes read: `region` grown, clipped to `dw`
+    Span ys;   ///< the boxes' rows
+    Span out;  ///< the pixels of the row
+    ROI dw;
+    std::vector<float> column;
+    std::vector<double> running;
+
+    RowBoxes(const ROI& region, const ROI& dw_, int y)
+        : cols(grow_and_clip(region, agreement_radius, dw_)),
+          ys(clip_window(y, agreement_radius, dw_.ybegin, dw_.yend)),
+          out { region.xbegin, region.xend }, dw(dw_)
+    {
+        column.resize(size_t(cols.width()));
+    }
+
+    /// Start a new sum of the columns.
+    void clear() { std::fill(column.begin(), column.end(), 0.0f); }
+
+    /// Add to the columns' sums the rows `row(qy)` (a row of values over
+    /// `cols`).
+    template<class Row>
+    void add(Row&& row)
+    {
+        float* sum = column.data();
+        for (int qy = ys.begin; qy < ys.end; ++qy) {
+            const float* v = row(qy);
+            for (int i = 0; i < cols.width(); ++i)
+                sum[i] += v[i];
         }
-        for (int x = region.xbegin; x < region.xend; ++x) {
+    }
+
+    /// Add to the columns' sums the rows `row(qy)` minus the rows
+    /// `minus(qy)`.
+    template<class Row, class Minus>
+    void add_difference(Row&& row, Minus&& minus)
+    {
+        float* sum = column.data();
+        for (int qy = ys.begin; qy < ys.end; ++qy) {
+            const float* v = row(qy);
+            const float* m = minus(qy);
+            for (int i = 0; i < cols.width(); ++i)
+                sum[i] += v[i] - m[i];
+        }
+    }
+
+    /// `put(i, mean)` for each pixel i (from 0) of the row: the mean of
+    /// what was added over its box.
+    template<class Put>
+    void means(Put&& put)
+    {
+        running.resize(column.size() + 1);
+        running[0] = 0.0;
+        for (size_t i = 0; i < column.size(); ++i)
+            running[i + 1] = running[i] + double(column[i]);
+        for (int x = out.begin; x < out.end; ++x) {
             const Span xs = clip_window(x, agreement_radius, dw.xbegin, dw.xend);
-            float sum = 0.0f;
-            for (int qx = xs.begin; qx < xs.end; ++qx)
-                sum += column[size_t(qx - cols.xbegin)];
-            out.at(x, y) = sum / float(xs.end - xs.begin);
+            const double sum
+                = running[size_t(xs.end - cols.xbegin)] - running[size_t(xs.begin - cols.xbegin)];
+            put(size_t(x - out.begin), float(sum / (double(ys.size()) * double(xs.size()))));
         }
+    }
+};
+
+// Per pixel of the row, the squared difference of a neighbour's box mean
+// from the centre's, summed over the colour channels, that agreement
+// allows: agreement_sigmas^2 times 2 v correlated_pixels / box, v summed
+// over the channels (the box mean is linear: one sum for all of them).
+void allowed_row(const NlmFrame& centre, RowBoxes& boxes, std::vector<float>& allowed)
+{
+    const float box = float((2 * agreement_radius + 1) * (2 * agreement_radius + 1));
+    boxes.clear();
+    for (int c = 0; c < centre.colour->nchannels(); ++c) {
+        boxes.add([&](int qy) { return centre.variance->colour.from(c, boxes.cols.xbegin, qy); });
+    }
+    boxes.means([&](size_t i, float mean) {
+        allowed[i] = agreement_sigmas * agreement_sigmas * 2.0f * mean * correlated_pixels / box;
     });
 }
 
-// Whether each neighbour agrees with the centre at each pixel of `region`
-// (1 or 0), one plane per neighbour.
-std::vector<Plane<float>> agreement(const std::vector<NlmFrame>& frames,
-                                    const std::vector<const Plane<float>*>& faithful,
-                                    const ROI& region, const ROI& dw, int nthreads)
+// Per pixel of the row, the squared difference of neighbour `f`'s box
+// mean from the centre's, summed over the colour channels.
+void apart_row(const NlmFrame& centre, const NlmFrame& f, RowBoxes& boxes,
+               std::vector<float>& apart)
+{
+    std::fill(apart.begin(), apart.end(), 0.0f);
+    for (int c = 0; c < centre.colour->nchannels(); ++c) {
+        boxes.clear();
+        boxes.add_difference(
+            [&](int qy) { return f.colour->colour.from(c, boxes.cols.xbegin, qy); },
+            [&](int qy) { return centre.colour->colour.from(c, boxes.cols.xbegin, qy); });
+        boxes.means([&](size_t i, float mean) { apart[i] += mean * mean; });
+    }
+}
+
+// Per neighbour, whether it agrees with the centre (1 or 0) at each pixel
+// of row y of `region`: `agrees[k - 1]`, one value per pixel of the row.
+void agreement_row(const std::vector<NlmFrame>& frames,
+                   const std::vector<const Plane<float>*>& faithful, const ROI& region,
+                   const ROI& dw, int y, std::vector<std::vector<float>>& agrees)
 {
     const NlmFrame& centre = frames[0];
-    const int nc           = centre.colour->nchannels();
-    const float box        = float((2 * agreement_radius + 1) * (2 * agreement_radius + 1));
-    // The allowed squared difference of the box means, summed over the
-    // colour channels.
-    Plane<float> allowed(region, 0.0f);
-    Plane<float> mean(region);
-    for (int c = 0; c < nc; ++c) {
-        box_mean([&](int x, int y) { return *centre.variance->colour.from(c, x, y); }, region,
-                 dw, nthreads, mean);
-        for (size_t i = 0; i < allowed.values.size(); ++i)
-            allowed.values[i] += agreement_sigmas * agreement_sigmas * 2.0f * mean.values[i]
-                                 * correlated_pixels / box;
-    }
-    std::vector<Plane<float>> out;
+    const int n            = region.width();
+    const size_t count     = static_cast<size_t>(n);
+    RowBoxes boxes(region, dw, y);
+    std::vector<float> allowed(count), apart(count), features(count);
+    const std::vector<float> no_exponent(count, 0.0f);
+    allowed_row(centre, boxes, allowed);
     for (size_t k = 1; k < frames.size(); ++k) {
-        const NlmFrame& f       = frames[k];
+        const NlmFrame& f = frames[k];
+        apart_row(centre, f, boxes, apart);
+        centre.features->weights_row(y, region.xbegin, n, 0, 0, no_exponent.data(), 1.0f,
+                                     features.data(), *f.features);
         const Plane<float>& put = *faithful[k - 1];
-        Plane<float> apart(region, 0.0f);
-        for (int c = 0; c < nc; ++c) {
-            box_mean([&](int x, int y) {
-                         return *f.colour->colour.from(c, x, y) - *centre.colour->colour.from(c, x, y);
-                     },
-                     region, dw, nthreads, mean);
-            for (size_t i = 0; i < apart.values.size(); ++i)
-                apart.values[i] += mean.values[i] * mean.values[i];
-        }
-        Plane<float> agrees(region);
-        parallel_rows(region, nthreads, [&](int y) {
-            const int n = region.width();
-            const std::vector<float> none(size_t(n), 0.0f);
-            std::vector<float> features(static_cast<size_t>(n));
-            centre.features->weights_row(y, region.xbegin, n, 0, 0, none.data(), 1.0f,
-                                         features.data(), *f.features);
-            for (int x = region.xbegin; x < region.xend; ++x)
-                agrees.at(x, y) = put.at(x, y) > 0.0f
-                                          && features[size_t(x - region.xbegin)] >= min_feature_weight
-                                          && apart.at(x, y) <= allowed.at(x, y)
-                                      ? 1.0f
-                                      : 0.0f;
-        });
-        out.push_back(std::move(agrees));
+        std::vector<float>& a   = agrees[k - 1];
+        a.resize(count);
+        for (size_t i = 0; i < count; ++i)
+            a[i] = put.at(region.xbegin + int(i), y) > 0.0f && features[i] >= min_feature_weight
+                           && apart[i] <= allowed[i]
+                       ? 1.0f
+                       : 0.0f;
     }
-    return out;
 }
 
 }  // namespace
@@ -115,19 +166,21 @@ std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
         return out;
     const int nc  = frames[0].colour->nchannels();
     const auto lw = luminance_weights(nc);
-    const std::vector<Plane<float>> agrees = agreement(frames, faithful, region, dw, nthreads);
     for (size_t k = 0; k < frames.size(); ++k)
         out.push_back({ Planes<float>(region, nc), Plane<float>(region) });
     parallel_rows(region, nthreads, [&](int y) {
+        std::vector<std::vector<float>> agrees(frames.size() - 1);
+        agreement_row(frames, faithful, region, dw, y, agrees);
         for (int x = region.xbegin; x < region.xend; ++x) {
-            double n = 1.0;
-            for (const Plane<float>& a : agrees)
-                n += a.at(x, y);
+            const size_t i = size_t(x - region.xbegin);
+            double n       = 1.0;
+            for (const std::vector<float>& a : agrees)
+                n += a[i];
             std::array<float, feature_colour_channels> spread {};
             for (int c = 0; c < nc && n >= 3.0; ++c) {
                 double sum = *frames[0].colour->colour.from(c, x, y), sum2 = sum * sum;
                 for (size_t k = 1; k < frames.size(); ++k) {
-                    const double v = agrees[k - 1].at(x, y) * *frames[k].colour->colour.from(c, x, y);
+                    const double v = agrees[k - 1][i] * *frames[k].colour->colour.from(c, x, y);
                     sum += v;
                     sum2 += v * v;
                 }
