@@ -97,13 +97,27 @@ void cubic_weights(float t, float* k)
     k[3] = 0.5f * (t3 - t2);
 }
 
+// The pixel cell a source's point lies in: its top-left pixel (bx, by)
+// and the point's fractions (tx, ty) across it, from the nearest pixel, so
+// the same at any data window origin.
+struct Cell {
+    int bx, by;
+    float tx, ty;
+};
+
+Cell cell_of(const Source& s)
+{
+    return { s.qx + (s.dx < 0.0f ? -1 : 0), s.qy + (s.dy < 0.0f ? -1 : 0),
+             s.dx < 0.0f ? 1.0f + s.dx : s.dx, s.dy < 0.0f ? 1.0f + s.dy : s.dy };
+}
+
 Taps resampling_taps(const Source& s, const ROI& from, Kernel kernel, bool bounded)
 {
-    // From the nearest pixel, so the same at any data window origin.
-    const int bx = s.qx + (s.dx < 0.0f ? -1 : 0), by = s.qy + (s.dy < 0.0f ? -1 : 0);
+    const Cell cell = cell_of(s);
+    const int bx = cell.bx, by = cell.by;
     float kx[4], ky[4];
-    kernel(s.dx < 0.0f ? 1.0f + s.dx : s.dx, kx);
-    kernel(s.dy < 0.0f ? 1.0f + s.dy : s.dy, ky);
+    kernel(cell.tx, kx);
+    kernel(cell.ty, ky);
     Taps t;
     float total = 0.0f;
     for (int j = 0; j < 4; ++j)
@@ -178,11 +192,11 @@ bool resampled_within_noise(const Source& s, const ROI& from,
                             const std::vector<LargeVector<float>>& colour,
                             const std::vector<LargeVector<float>>& variance)
 {
-    const int bx = s.qx + (s.dx < 0.0f ? -1 : 0), by = s.qy + (s.dy < 0.0f ? -1 : 0);
+    const Cell cell = cell_of(s);
+    const int bx = cell.bx, by = cell.by;
     if (!inside(from, bx - 1, by - 1) || !inside(from, bx + 2, by + 2))
         return false;
-    const float tx = s.dx < 0.0f ? 1.0f + s.dx : s.dx, ty = s.dy < 0.0f ? 1.0f + s.dy : s.dy;
-    const float cx = 0.5f * tx * (1.0f - tx), cy = 0.5f * ty * (1.0f - ty);
+    const float cx = 0.5f * cell.tx * (1.0f - cell.tx), cy = 0.5f * cell.ty * (1.0f - cell.ty);
     const float allowed = faithful_error_sigmas * faithful_error_sigmas;
     // The 4x4 pixels from (bx - 1, by - 1), row by row.
     const size_t corner = pixel_offset(from, bx - 1, by - 1), row = size_t(from.width());
