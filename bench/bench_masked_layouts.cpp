@@ -9,9 +9,9 @@
 #include <mcdenoise/mcdenoise.h>
 
 #include "bench_images.h"
+#include "core/pixel_block.h"
+#include "features/weighted_sums.h"
 #include "freed_memory.h"
-#include "pixel_block.h"
-#include "weighted_sums.h"
 
 #include <benchmark/benchmark.h>
 

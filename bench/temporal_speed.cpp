@@ -11,7 +11,7 @@
 #include <mcdenoise/mcdenoise.h>
 
 #include "support/render_file.h"
-#include "temporal_baseline.h"
+#include "support/warped_average.h"
 
 #include <sys/resource.h>
 

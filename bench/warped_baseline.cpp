@@ -13,7 +13,7 @@
 // Writes the baseline's beauty (float RGB) to OUT.exr.
 #include "error.h"
 #include "frame_inputs.h"
-#include "temporal_baseline.h"
+#include "support/warped_average.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 

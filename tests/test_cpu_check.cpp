@@ -1,7 +1,7 @@
 // test_cpu_check.cpp: the load-time CPU check's decision, with injected
 // feature sets: what is missing is found and named, nothing is reported on
 // a CPU that has everything, and the build's list follows its -march.
-#include "cpu_check.h"
+#include "core/cpu_check.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 // its data window read as 0, and bad layers refused.
 #include <mcdenoise/mcdenoise.h>
 
-#include "layer_channels.h"
+#include "passes/layer_steps.h"
 #include "support/guide_images.h"
 #include "support/test_images.h"
 
@@ -118,7 +118,8 @@ std::vector<ImageBuf> check_shared_operator(const ImageBuf& beauty, ImageBuf& ou
     std::vector<const ImageBuf*> layers = pointers(hots);
     layers.push_back(&layer);
     std::vector<ImageBuf> outs;
-    EXPECT_TRUE(mcdenoise::denoise_layers_shared(out, outs, beauty, layers)) << out.geterror();
+    EXPECT_TRUE(mcdenoise::denoise_layers_steps(mcdenoise::LayerSteps::beauty_operator, out, outs,
+                                                    beauty, layers, {}, {}, {}, 0)) << out.geterror();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             double expect_layer[2] = {}, expect_colour[3] = {};
@@ -183,7 +184,9 @@ TEST(DenoiseLayers, ANoiseFreeEdgeStaysWhereTheBeautysWeightsBlurIt)
     const ImageBuf beauty   = IBA::add(direct, indirect);
     ImageBuf shared_out, own_out;
     std::vector<ImageBuf> shared, own;
-    ASSERT_TRUE(mcdenoise::denoise_layers_shared(shared_out, shared, beauty, { &direct, &indirect }));
+    ASSERT_TRUE(mcdenoise::denoise_layers_steps(mcdenoise::LayerSteps::beauty_operator, shared_out,
+                                                shared, beauty, { &direct, &indirect }, {}, {}, {},
+                                                0));
     ASSERT_TRUE(mcdenoise::denoise_layers(own_out, own, beauty, { &direct, &indirect }));
     const double blurred = mcdenoise::rel_mse(shared[0], direct);
     EXPECT_GT(blurred, 1e-3);

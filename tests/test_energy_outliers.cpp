@@ -4,10 +4,10 @@
 // wide Gaussian of a known firefly; the window weights of an unjudged
 // outlier, filters.md's NL-means formula in double, and their tap from the
 // average), pixel by pixel.
-#include "energy_outliers.h"
+#include "denoise/energy_outliers.h"
 
-#include "feature_field.h"
-#include "layer_channels.h"
+#include "features/feature_field.h"
+#include "features/nlmeans_layers.h"
 
 #include <mcdenoise/fireflies.h>
 

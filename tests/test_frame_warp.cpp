@@ -5,7 +5,7 @@
 // faithful where that error is at most half the noise's standard
 // deviation in every channel and the 4x4 pixels around the point lie in
 // the frame; every pixel carried in place faithful, however curved.
-#include "frame_warp.h"
+#include "shots/frame_warp.h"
 
 #include <gtest/gtest.h>
 

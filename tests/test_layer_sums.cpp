@@ -3,7 +3,7 @@
 // term's noise, the rest by each term's part of the rebuild, never below
 // zero, divided by a term's colour, and nothing changed where the raw
 // terms do not rebuild the raw beauty.
-#include "layer_sums.h"
+#include "passes/layer_sums.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // test_median_kernel.cpp: the SIMD median networks (8 lanes, and 16 where
 // the processor has AVX-512) against sorting, on random windows with many
 // ties, for every size a network serves; and in-place selection.
-#include "median_kernel.h"
+#include "walkers/median_kernel.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // never below a frame's own variance; a neighbour left out where it was
 // moved, where its features differ or where its box mean disagrees (a
 // moving shadow); the own variance where fewer than three frames agree.
-#include "shot_variance.h"
+#include "shots/shot_variance.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // weight rows in one pass, against the same rows added one at a time and
 // against sums in double precision; and the masked values both masked
 // layouts hold (interleaved and planar), against the rule written out.
-#include "weighted_sums.h"
+#include "features/weighted_sums.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // metrics and the masks of the regions they look at.
 #include "support/shot.h"
 
-#include "temporal_baseline.h"
+#include "support/warped_average.h"
 
 #include <mcdenoise/mcdenoise.h>
 
