@@ -96,7 +96,7 @@ int main(int argc, char** argv)
                 if (layers.empty())
                     mcdenoise::denoise(r.beauty, guides, {}, threads);
                 else
-                    mcdenoise::denoise_layers(r.beauty, layers, guides, {}, threads, terms);
+                    mcdenoise::denoise_layers(r.beauty, layers, guides, terms, {}, threads);
             });
             best[k]     = std::min(best[k], wall);
             best_cpu[k] = std::min(best_cpu[k], cpu);

@@ -1,5 +1,4 @@
 // commands.cpp: the rows of the command table, one library call each.
-// Only filters whose headers exist in imageops/include/mcdenoise/ appear.
 #include "commands.h"
 
 #include <mcdenoise/mcdenoise.h>
@@ -13,7 +12,7 @@ using OIIO::Strutil::fmt::format;
 namespace {
 
 /// The guide for `role` in `guides`, or nullptr.
-const ImageBuf* present(const Guides& guides, Role role)
+const ImageBuf* present(const GuideImages& guides, Role role)
 {
     const auto found = guides.images.find(role);
     return found == guides.images.end() ? nullptr : &found->second;
@@ -29,7 +28,7 @@ const ImageBuf& Call::guide(Role role) const { return guides.images.at(role); }
 
 const ImageBuf* Call::optional_guide(Role role) const { return present(guides, role); }
 
-mcdenoise::Guides library_guides(const Guides& images)
+mcdenoise::Guides library_guides(const GuideImages& images)
 {
     mcdenoise::Guides guides;
     for (const RoleInfo& info : role_table())
@@ -57,7 +56,7 @@ const Param factor_param = { "FACTOR", ParamType::number, "times the 75th-percen
 const Param search_param = { "SEARCH_RADIUS", ParamType::integer, "search window radius, 0..127 (patch radius 1)",
                              0, mcdenoise::max_nlmeans_search_radius };
 
-/// The roles whose guides fill the `Guides` fields of `guides`, in the
+/// The roles whose guides fill the `mcdenoise::Guides` fields of `guides`, in the
 /// role table's order.
 std::vector<Role> roles_of(mcdenoise::GuideMask guides)
 {
@@ -84,8 +83,8 @@ bool denoise_layers(const Call& call)
         terms.push_back({ call.layers->passes[i].sum, colour.initialized() ? &colour : nullptr });
     }
     std::vector<ImageBuf> denoised;
-    if (!mcdenoise::denoise_layers(call.dst, denoised, call.beauty, layers, feature_guides(call), {},
-                                   call.nthreads, terms))
+    if (!mcdenoise::denoise_layers(call.dst, denoised, call.beauty, layers, feature_guides(call),
+                                   terms, {}, call.nthreads))
         return false;
     call.layers->images = std::move(denoised);
     return true;

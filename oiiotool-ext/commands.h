@@ -40,14 +40,14 @@ struct Param {
 };
 
 /// Guide images by role, each with a note saying where it came from.
-struct Guides {
+struct GuideImages {
     std::map<Role, ImageBuf> images;
     std::map<Role, std::string> sources;  ///< "render.exr: N.X,N.Y,N.Z"
 };
 
 /// The present guides of `images` in the library's form: each role whose
-/// argument names a `Guides` field fills it.
-mcdenoise::Guides library_guides(const Guides& images);
+/// argument names a `mcdenoise::Guides` field fills it.
+mcdenoise::Guides library_guides(const GuideImages& images);
 
 /// A frame of a --temporal window as --denoise takes it: its beauty as
 /// read, its guides, and where the window keeps its preparation for the
@@ -56,7 +56,7 @@ mcdenoise::Guides library_guides(const Guides& images);
 struct WindowFrame {
     int offset;  ///< frame number minus the centre's (0: the centre)
     const ImageBuf* beauty;
-    const Guides* guides;
+    const GuideImages* guides;
     mcdenoise::PreparedFrame* prepared;
 };
 
@@ -64,7 +64,7 @@ struct WindowFrame {
 struct Call {
     ImageBuf& dst;
     const ImageBuf& beauty;
-    const Guides& guides;
+    const GuideImages& guides;
     const std::vector<std::string>& values;  ///< validated against the Params
     int nthreads;
     /// With --temporal, the neighbouring frames found on disk (maybe none):

@@ -86,7 +86,7 @@ bool all_outputs_exist(const std::vector<OutputPath>& outputs)
 
 /// With -v: which channels went to the beauty and to each guide role.
 void report_channels(const std::string& input_path, const ImageBuf& input, const Discovery& found,
-                     const Guides& guides)
+                     const GuideImages& guides)
 {
     std::printf("mcdtool: %-8s <- %s: %s\n", "beauty", input_path.c_str(),
                 channel_names(input.spec(), found.beauty).c_str());
@@ -128,7 +128,7 @@ struct WindowFrames {
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed. With `window`,
 /// the command takes its frames (--denoise across frames).
-ImageBuf run_command(const Step& step, const ImageBuf& current, const Guides& guides, LightLayers& layers,
+ImageBuf run_command(const Step& step, const ImageBuf& current, const GuideImages& guides, LightLayers& layers,
                      int nthreads, bool verbose, RunStats& stats, const WindowFrames* window)
 {
     const Command& command = *step.command;
@@ -198,7 +198,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     const ImageBuf& input = *inputs.input;
     const std::string& input_path = inputs.path;
     const Discovery& found = inputs.found;
-    const Guides& guides = inputs.guides;
+    const GuideImages& guides = inputs.guides;
     const std::vector<Part> parts = file_parts(input_path, "input");
     if (options.verbose)
         report_channels(input_path, input, found, guides);

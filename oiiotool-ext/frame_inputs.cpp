@@ -15,7 +15,7 @@ namespace {
 /// clamped beauty, its excess and its values: 3 planes per beauty
 /// channel; colour and variance with their luminance, 8; at most 7
 /// feature and 4 motion planes).
-uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const Guides& guides, bool temporal)
+uint64_t frame_bytes(const ImageBuf& input, const Discovery& found, const GuideImages& guides, bool temporal)
 {
     constexpr uint64_t beauty_buffers = 3, prepared_per_channel = 3, prepared_planes = 8 + 7 + 4;
     uint64_t channels = 2 * uint64_t(input.nchannels()) + beauty_buffers * found.beauty.size();

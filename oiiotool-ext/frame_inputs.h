@@ -27,7 +27,7 @@ struct FrameInputs {
     std::unique_ptr<ImageFiles> files;   ///< every file the frame read (input, --aov files)
     const ImageBuf* input = nullptr;     ///< the input file's image, in `files`
     Discovery found;
-    Guides guides;
+    GuideImages guides;
     ImageBuf beauty;                     ///< the beauty channels as float
 };
 

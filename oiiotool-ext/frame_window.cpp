@@ -24,7 +24,7 @@ std::string window_text(const OIIO::ROI& roi)
 
 /// "normal, depth": the guide roles present in `guides` besides motion
 /// (which a neighbour may lack: temporal.h repeats the last vector known).
-std::string role_list(const Guides& guides)
+std::string role_list(const GuideImages& guides)
 {
     std::vector<std::string> names;
     for (const auto& [role, image] : guides.images)

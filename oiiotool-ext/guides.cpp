@@ -77,7 +77,7 @@ void require_same_display_window(const ImageBuf& file, const ImageBuf& input, co
 /// Warns when the id guide that `used` commands need is one value
 /// everywhere (Blender's default pass index 0): the object filters then
 /// work as their plain versions.
-void warn_constant_ids(const Guides& guides, const std::set<Role>& used)
+void warn_constant_ids(const GuideImages& guides, const std::set<Role>& used)
 {
     auto ids = guides.images.find(Role::id);
     if (ids == guides.images.end() || !used.count(Role::id))
@@ -117,11 +117,11 @@ void require_coverage(const ImageBuf& guide, const ImageBuf& beauty, const std::
                           window_text(g), window_text(b)));
 }
 
-Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
+GuideImages load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
                    const std::vector<AovRequest>& aovs, const std::set<Role>& used,
                    const PathForFrame& frame_path_of, ImageFiles& files)
 {
-    Guides guides;
+    GuideImages guides;
     int beauty_channels = int(found.beauty.size());
     for (const auto& [role, indices] : found.roles) {
         if (used.count(role))
@@ -152,7 +152,7 @@ Guides load_guides(const ImageBuf& input, const std::string& input_path, const D
     return guides;
 }
 
-void require_guides(const Command& command, const Guides& guides, const std::string& input_path,
+void require_guides(const Command& command, const GuideImages& guides, const std::string& input_path,
                     const ImageSpec& input_spec, const Discovery& found)
 {
     for (Role role : command.roles) {

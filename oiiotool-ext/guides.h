@@ -26,13 +26,13 @@ std::set<Role> roles_used(const std::vector<Step>& steps, bool across_frames);
 /// The guides of one frame: every --aov file of `aovs`, and each guide
 /// discovered in `input` whose role is in `used` (the others only get a
 /// source, for -v).
-Guides load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
+GuideImages load_guides(const ImageBuf& input, const std::string& input_path, const Discovery& found,
                    const std::vector<AovRequest>& aovs, const std::set<Role>& used,
                    const PathForFrame& frame_path_of, ImageFiles& files);
 
 /// Throws RunError unless `guides` holds every role `command` needs; the
 /// message names the command, the role and where it was looked for.
-void require_guides(const Command& command, const Guides& guides, const std::string& input_path,
+void require_guides(const Command& command, const GuideImages& guides, const std::string& input_path,
                     const ImageSpec& input_spec, const Discovery& found);
 
 /// Throws RunError "<context> : ..." unless `guide`'s data window covers

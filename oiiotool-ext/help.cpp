@@ -7,14 +7,12 @@
 #include "light_passes.h"
 #include "roles.h"
 
+#include <mcdenoise/version.h>
+
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
 #include <vector>
-
-#ifndef MCD_VERSION
-#    define MCD_VERSION "unknown"
-#endif
 
 namespace mcdtool {
 
@@ -164,7 +162,8 @@ std::vector<std::string> option_examples()
 
 std::string version_text()
 {
-    return format("mcdtool {} (OpenImageIO {})", MCD_VERSION, OIIO_VERSION_STRING);
+    return format("mcdtool {} (libmcdenoise {}, OpenImageIO {})", MCDENOISE_VERSION_STRING,
+                  mcdenoise::version(), OIIO_VERSION_STRING);
 }
 
 std::string help_text()

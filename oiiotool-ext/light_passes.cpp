@@ -236,7 +236,7 @@ LightLayers load_light_layers(const ImageBuf& input, std::vector<LightPass> pass
     if (!coloured)
         return layers;
     const double error = mcdenoise::rel_mse(rebuild_beauty(layers, beauty), beauty);
-    layers.rebuild     = error <= rebuild_tolerance;
+    layers.rebuild     = error <= rebuild_relmse_tolerance;
     if (!layers.rebuild)
         std::fprintf(stderr,
                      "mcdtool WARNING: --aovs : the light passes of %s do not add up to the beauty "

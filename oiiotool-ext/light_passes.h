@@ -52,14 +52,14 @@ struct LightLayers {
 
 /// Extract `passes` from `input`. `rebuild` is set when some pass has a
 /// colour pass and the raw passes rebuild the raw `beauty` (relMSE at most
-/// `rebuild_tolerance`); with a colour pass but no such match, a warning
+/// `rebuild_relmse_tolerance`); with a colour pass but no such match, a warning
 /// says the beauty is denoised on its own.
 LightLayers load_light_layers(const ImageBuf& input, std::vector<LightPass> passes,
                               const ImageBuf& beauty, std::string_view file);
 
 /// The most relMSE between the raw beauty and the raw passes' rebuild for
 /// the passes to count as complete.
-constexpr double rebuild_tolerance = 1e-4;
+constexpr double rebuild_relmse_tolerance = 1e-4;
 
 /// `beauty` with its colour channels replaced by the rebuild of `layers`:
 /// sum over the passes of the Cycles rebuild (`LightPass::sum`, the one

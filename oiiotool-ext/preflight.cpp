@@ -82,7 +82,7 @@ void check_parameters(const std::vector<Step>& steps)
         if (!step.command)
             continue;
         const Command& command = *step.command;
-        Guides guides;
+        GuideImages guides;
         for (Role role : command.roles) {
             const RoleInfo& info = role_info(role);
             guides.images[role] = one_pixel(info.like_beauty ? beauty_channels : info.max_channels);

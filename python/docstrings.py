@@ -9,7 +9,7 @@ docstring, so the bindings say exactly what the headers say.
 import re
 import sys
 
-DECLARATION = re.compile(r"^[A-Za-z_][\w:<>]*\s+([a-z_][a-z0-9_]*)\(")
+DECLARATION = re.compile(r"^(?:const\s+)?[A-Za-z_][\w:<>]*\*?\s+([a-z_][a-z0-9_]*)\(")
 
 
 def header_docs(text):

@@ -214,7 +214,7 @@ TEST(DenoiseLayers, TheBeautyIsBitIdenticalToDenoisesWithAnyLayers)
         const ROI part(3, 30, 2, 20);
         ImageBuf part_out;
         std::vector<ImageBuf> part_outs;
-        ASSERT_TRUE(mcdenoise::denoise_layers(part_out, part_outs, beauty, { &one }, g, part));
+        ASSERT_TRUE(mcdenoise::denoise_layers(part_out, part_outs, beauty, { &one }, g, {}, part));
         EXPECT_TRUE(testimg::bit_identical(part_out, mcdenoise::denoise(beauty, g, part)));
         EXPECT_EQ(part_outs[0].roi(), ROI(3, 30, 2, 20, 0, 1, 0, 1));
     }
@@ -231,8 +231,8 @@ TEST(DenoiseLayers, ALayerReadsAsZeroOutsideItsDataWindow)
     const ROI part(8, 20, 7, 17);
     ImageBuf a, b;
     std::vector<ImageBuf> from_cropped, from_padded;
-    ASSERT_TRUE(mcdenoise::denoise_layers(a, from_cropped, beauty, { &cropped }, {}, part)) << a.geterror();
-    ASSERT_TRUE(mcdenoise::denoise_layers(b, from_padded, beauty, { &padded }, {}, part));
+    ASSERT_TRUE(mcdenoise::denoise_layers(a, from_cropped, beauty, { &cropped }, {}, {}, part)) << a.geterror();
+    ASSERT_TRUE(mcdenoise::denoise_layers(b, from_padded, beauty, { &padded }, {}, {}, part));
     EXPECT_TRUE(testimg::bit_identical(from_cropped[0], from_padded[0]));
 }
 

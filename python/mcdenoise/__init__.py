@@ -13,7 +13,10 @@ came in. The GIL is released while the library runs. A library error raises
 mcdenoise.Error with the library's message; a malformed mcdtool command line
 raises mcdenoise.UsageError.
 
+`mcdenoise.__version__` is the loaded library's version ("0.2.0").
+
 Frame-sequence batch denoise (local process pool or Dask) is in
 mcdenoise.batch; see docs/python.md.
 """
 from ._mcdenoise import *  # noqa: F401,F403 (the bound library, mcdenoise.Error, UsageError, ... is the API)
+from ._mcdenoise import __version__  # noqa: F401 (the loaded libmcdenoise's version, "major.minor.patch")

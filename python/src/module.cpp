@@ -11,8 +11,10 @@
 
 #include <mcdenoise/features.h>
 #include <mcdenoise/metrics.h>
+#include <mcdenoise/version.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace mcdpy {
 
@@ -77,6 +79,10 @@ PYBIND11_MODULE(_mcdenoise, m)
     // it must be imported before the first def that names them.
     py::module_::import("OpenImageIO");
     m.doc() = "libmcdenoise's filters and metrics, and mcdtool's frame runner.";
+    // the loaded library's version (mcdenoise/version.h)
+    m.attr("__version__") = mcdenoise::version();
+    m.def("version", [] { return std::string(mcdenoise::version()); }, mcdpy::library_doc("version"));
+    m.def("version_number", &mcdenoise::version_number, mcdpy::library_doc("version_number"));
 
     static py::exception<mcdpy::LibraryError> error(m, "Error", PyExc_RuntimeError);
     static py::exception<mcdtool::UsageError> usage_error(m, "UsageError", PyExc_ValueError);

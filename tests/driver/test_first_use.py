@@ -3,9 +3,11 @@ read (exit 2, once per run), output folders made, diagnostics' paths checked
 before the work, file modes kept and write-protected files refused,
 progress on a terminal and a summary for sequences, and suspect input
 (guides of another resolution, constant ids, 8-bit display-referred
-pictures, formats without channel names, HDR PSNR) refused or warned about."""
+pictures, formats without channel names, HDR PSNR) refused or warned about;
+--version names the tool's, the library's and OpenImageIO's versions."""
 import os
 import pty
+import re
 import stat
 import subprocess
 import time
@@ -21,6 +23,15 @@ BEAUTY = ["R", "G", "B"]
 def error_lines(result):
     """The 'mcdtool ERROR:' lines of a run's stderr."""
     return [line for line in result.err.splitlines() if line.startswith("mcdtool ERROR:")]
+
+
+def test_version_names_the_tool_the_library_and_openimageio():
+    header = os.path.join(os.path.dirname(__file__), "..", "..", "imageops", "include", "mcdenoise", "version.h")
+    with open(header, encoding="utf-8") as f:
+        version = re.search(r'#define MCDENOISE_VERSION_STRING "([0-9.]+)"', f.read()).group(1)
+    r = run("--version")
+    assert r.code == 0 and r.err == "", r
+    assert r.out == f"mcdtool {version} (libmcdenoise {version}, OpenImageIO {oiio.VERSION_STRING})\n", r
 
 
 def write_sequence(directory, frames, names=BEAUTY):

@@ -65,7 +65,7 @@ def header_functions():
             if line.startswith("///"):
                 doc.append(line[3:].strip())
                 continue
-            match = re.match(r"^[A-Za-z_][\w:<>]*\s+([a-z_][a-z0-9_]*)\(", line)
+            match = re.match(r"^(?:const\s+)?[A-Za-z_][\w:<>]*\*?\s+([a-z_][a-z0-9_]*)\(", line)
             if match and doc and match.group(1) not in found:
                 found[match.group(1)] = doc[0]
             doc = []
@@ -101,6 +101,16 @@ def test_every_header_function_is_bound_with_its_doc():
         bound = getattr(mcdenoise, name, None)
         assert bound is not None, f"{name} is declared in the headers but not bound"
         assert first_line in bound.__doc__, name
+
+
+def test_version_is_the_headers():
+    """mcdenoise.__version__ and version() are the loaded library's version,
+    the one mcdenoise/version.h writes."""
+    text = (HEADERS / "version.h").read_text()
+    header = re.search(r'#define MCDENOISE_VERSION_STRING "([0-9.]+)"', text).group(1)
+    assert mcdenoise.__version__ == header == mcdenoise.version()
+    major, minor, patch = (int(p) for p in header.split("."))
+    assert mcdenoise.version_number() == major * 10000 + minor * 100 + patch
 
 
 def test_guide_vocabulary_is_the_guides_struct():

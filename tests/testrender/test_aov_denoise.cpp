@@ -178,7 +178,7 @@ TEST_P(SceneQuality, IndirectDiffuseLosesMostOfItsNoiseAndTheRebuiltBeautyStaysC
         terms[i].colour = &colours[i / 2];
     ImageBuf out;
     std::vector<ImageBuf> outs;
-    ASSERT_TRUE(mcdenoise::denoise_layers(out, outs, beauty, layers, guides, {}, 0, terms))
+    ASSERT_TRUE(mcdenoise::denoise_layers(out, outs, beauty, layers, guides, terms))
         << out.geterror();
     for (size_t i = 0; i < light_offsets.size(); ++i) {
         const ImageBuf truth = pass_image(ref, light_offsets[i]);

@@ -64,25 +64,27 @@ struct LayerTerm {
 /// direct/indirect passes, emission. Colour (filter) passes such as
 /// albedo or DiffCol are not light and should stay as they are.
 ///
-/// @param dst         The denoised beauty (allocated if uninitialized).
-/// @param dst_layers  Resized to `layers.size()`; `dst_layers[i]` is the
-///                    denoised `*layers[i]`, with its channels and names.
+/// Returns the denoised beauty, then the denoised layers in order, each
+/// with its channels and names (on failure a single image with the error
+/// set).
+///
 /// @param beauty      The noisy render, any channel count (colour first).
 /// @param layers      Images of any channel count; each must cover the
 ///                    ROI (pixels outside its data window read as 0).
 /// @param guides      As for `denoise`.
-/// @param roi         The pixels to denoise (all channels of each image).
 /// @param terms       Empty (every layer a term of one plain sum), or one
 ///                    per layer; a colour must cover the ROI with the
 ///                    layer's colour channels.
-bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
-                    const std::vector<const ImageBuf*>& layers, const Guides& guides = {},
-                    ROI roi = {}, int nthreads = 0, const std::vector<LayerTerm>& terms = {});
-/// The value form: the denoised beauty, then the denoised layers in order
-/// (on failure a single image with the error set).
+/// @param roi         The pixels to denoise (all channels of each image).
 std::vector<ImageBuf> denoise_layers(const ImageBuf& beauty,
                                      const std::vector<const ImageBuf*>& layers,
-                                     const Guides& guides = {}, ROI roi = {}, int nthreads = 0,
-                                     const std::vector<LayerTerm>& terms = {});
+                                     const Guides& guides = {},
+                                     const std::vector<LayerTerm>& terms = {}, ROI roi = {},
+                                     int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized), and
+/// the layers to `dst_layers`, resized to `layers.size()`.
+bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
+                    const std::vector<const ImageBuf*>& layers, const Guides& guides = {},
+                    const std::vector<LayerTerm>& terms = {}, ROI roi = {}, int nthreads = 0);
 
 MCDENOISE_API_END

@@ -44,5 +44,6 @@
 #include <mcdenoise/object.h>
 #include <mcdenoise/simple.h>
 #include <mcdenoise/temporal.h>
+#include <mcdenoise/version.h>
 #include <mcdenoise/metrics.h>
 #include <mcdenoise/sequence_metrics.h>

@@ -112,12 +112,12 @@ PreparedFrame prepare_frame(const FrameInput& frame, int nthreads = 0);
 /// bit for bit, as the form above given the frames they were prepared
 /// from, with the same checks (an unprepared frame or one that failed to
 /// prepare is an error naming it).
+ImageBuf denoise(const PreparedFrame& centre, const std::vector<PreparedFrame>& neighbours,
+                 const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized).
 bool denoise(ImageBuf& dst, const PreparedFrame& centre,
              const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
              ROI roi = {}, int nthreads = 0);
-/// The value form of the prepared-frame `denoise`.
-ImageBuf denoise(const PreparedFrame& centre, const std::vector<PreparedFrame>& neighbours,
-                 const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
 
 /// Search radius in each neighbour frame carried by the motion guide.
 constexpr int temporal_search_radius = 2;

@@ -253,8 +253,8 @@ bool denoise_layers_steps(LayerSteps steps, ImageBuf& dst, std::vector<ImageBuf>
 
 
 bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const ImageBuf& beauty,
-                    const std::vector<const ImageBuf*>& layers, const Guides& guides, ROI roi,
-                    int nthreads, const std::vector<LayerTerm>& terms)
+                    const std::vector<const ImageBuf*>& layers, const Guides& guides,
+                    const std::vector<LayerTerm>& terms, ROI roi, int nthreads)
 {
     return denoise_layers_steps(LayerSteps::all, dst, dst_layers, beauty, layers, guides, terms,
                                 roi, nthreads);
@@ -262,12 +262,12 @@ bool denoise_layers(ImageBuf& dst, std::vector<ImageBuf>& dst_layers, const Imag
 
 std::vector<ImageBuf> denoise_layers(const ImageBuf& beauty,
                                      const std::vector<const ImageBuf*>& layers,
-                                     const Guides& guides, ROI roi, int nthreads,
-                                     const std::vector<LayerTerm>& terms)
+                                     const Guides& guides, const std::vector<LayerTerm>& terms,
+                                     ROI roi, int nthreads)
 {
     std::vector<ImageBuf> out(1);
     std::vector<ImageBuf> dst_layers;
-    if (!denoise_layers(out[0], dst_layers, beauty, layers, guides, roi, nthreads, terms)) {
+    if (!denoise_layers(out[0], dst_layers, beauty, layers, guides, terms, roi, nthreads)) {
         if (!out[0].has_error())
             out[0].errorfmt("mcdenoise: operation failed");
         return out;

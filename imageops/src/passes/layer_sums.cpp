@@ -34,7 +34,7 @@ bool rebuilds(const PixelBlock& raw, const std::vector<SumTerm>& terms, int x, i
             size += std::fabs(term);
         }
         if (!std::isfinite(sum) || !std::isfinite(b)
-            || std::fabs(sum - double(b)) > double(rebuild_tolerance) * size)
+            || std::fabs(sum - double(b)) > double(pixel_rebuild_tolerance) * size)
             return false;
     }
     return true;

@@ -27,7 +27,7 @@ struct SumTerm {
 /// The most a raw rebuild may differ from the raw beauty, as a share of
 /// |beauty| + the sum of |term|, for a pixel to count as rebuilt (half
 /// floats round each value by up to 2^-11 of it).
-constexpr float rebuild_tolerance = 1e-3f;
+constexpr float pixel_rebuild_tolerance = 1e-3f;
 
 /// How far the difference may move a term in the first round, in
 /// standard deviations of its estimated error: a move within its own noise.
@@ -36,7 +36,7 @@ constexpr float share_reach = 2.0f;
 /// Correct the results of `terms` so that, per pixel of their ROI and
 /// colour channel (the first three, or fewer), sum colour x result equals
 /// `beauty` (the denoised beauty's colour, a float image over that ROI or
-/// more) wherever sum colour x raw is within `rebuild_tolerance` of `raw`
+/// more) wherever sum colour x raw is within `pixel_rebuild_tolerance` of `raw`
 /// (the raw beauty) in every colour channel. The difference goes to the
 /// terms in proportion to colour^2 x error (where every error is 0, to
 /// |colour x value|, each term's part of the rebuild; equal shares where
