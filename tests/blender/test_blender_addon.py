@@ -14,7 +14,6 @@ import time
 
 import numpy as np
 import OpenImageIO as oiio
-import pytest
 
 import mcdenoise
 
@@ -24,7 +23,8 @@ MCDTOOL = os.environ.get("MCDTOOL", "mcdtool")
 SCENE_SCRIPT = os.path.join(os.path.dirname(__file__), "blender_scene.py")
 COMBINED = "ViewLayer.Combined."
 
-pytestmark = pytest.mark.skipif(BLENDER is None, reason="blender is not installed (scripts/setup installs it)")
+if BLENDER is None:
+    raise RuntimeError("blender is not on PATH: scripts/setup installs it")
 
 
 def run_blender(tmp_path, *options, render=("-a",)):

@@ -11,14 +11,14 @@ import subprocess
 
 import numpy as np
 import OpenImageIO as oiio
-import pytest
 
 BLENDER = shutil.which(os.environ.get("BLENDER", "blender"))
 MCDTOOL = os.environ.get("MCDTOOL", "mcdtool")
 SCENE_SCRIPT = os.path.join(os.path.dirname(__file__), "vector_pass_scene.py")
 STEP_PIXELS = (4.0, 2.0)  # the cube's motion per frame: right, up (vector_pass_scene.py)
 
-pytestmark = pytest.mark.skipif(BLENDER is None, reason="blender is not installed (scripts/setup installs it)")
+if BLENDER is None:
+    raise RuntimeError("blender is not on PATH: scripts/setup installs it")
 
 
 def render_frame_2(tmp_path):

@@ -162,15 +162,3 @@ def gaussian_reference(img, size):
             win = img[y0:y1, x0:x1].astype(np.float64)
             out[y, x] = (win * weight[..., None]).sum(axis=(0, 1)) / weight.sum()
     return out
-
-
-def commands():
-    """The command names mcdtool's table holds (from --help)."""
-    text = run("--help").out
-    return {line.split()[0] for line in text.splitlines() if line.startswith("  --")}
-
-
-def require_command(name):
-    """Skips the test unless the library (and so the table) has `name`."""
-    if name not in commands():
-        pytest.skip(f"{name} is not in the command table yet (its library header is missing)")

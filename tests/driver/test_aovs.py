@@ -159,9 +159,7 @@ def test_aovs_without_denoise_is_a_usage_error(tmp_path):
 def test_testrender_passes_rebuild_the_written_beauty(tmp_path):
     """On a testrender file (Cycles' names, a transmission lobe too) the
     written beauty is the recombination of the written passes."""
-    testrender = os.environ.get("TESTRENDER")
-    if not testrender:
-        pytest.skip("testrender is not built")
+    testrender = os.environ["TESTRENDER"]
     src_path = tmp_path / "render.exr"
     subprocess.run([testrender, "--scene", "textured", "--res", "48x36", "--spp", "4", "--passes", "-q",
                     "-o", str(src_path)], check=True)

@@ -7,7 +7,7 @@ import numpy as np
 import OpenImageIO as oiio
 import pytest
 
-from conftest import assert_no_outputs, check_failure, noisy_scene, require_command, run, write_image
+from conftest import assert_no_outputs, check_failure, noisy_scene, run, write_image
 
 BEAUTY = ["R", "G", "B"]
 
@@ -69,7 +69,6 @@ def test_bad_data_window(tmp_path):
 
 
 def test_bad_missing_guide(tmp_path):
-    require_command("--object-median")
     beauty, *_ = noisy_scene()
     write_image(tmp_path / "beauty.exr", beauty, BEAUTY)
     r = run(tmp_path / "beauty.exr", "--object-median", 3, "-o", tmp_path / "out.exr")

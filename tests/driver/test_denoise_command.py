@@ -3,7 +3,7 @@ found in the file, object edges stay, noise and fireflies go, every other
 channel is kept. Each test_* function is one CTest test."""
 import numpy as np
 
-from conftest import channel, read_image, require_command, run, write_image, noisy_scene
+from conftest import channel, read_image, run, write_image, noisy_scene
 
 COMBINED = ["My Layer.Combined." + c for c in "RGB"]
 
@@ -11,7 +11,6 @@ COMBINED = ["My Layer.Combined." + c for c in "RGB"]
 def test_denoise_keeps_edges_and_channels_of_a_cycles_file(cycles_exr, tmp_path):
     """On a Cycles multilayer file (no variance: it is estimated) the two
     objects stay apart, the noise drops, and every channel is written."""
-    require_command("--denoise")
     src, src_spec = read_image(cycles_exr)
     noisy = np.stack([channel(src, src_spec, n) for n in COMBINED], axis=2)
     out_path = tmp_path / "clean.exr"
@@ -32,7 +31,6 @@ def test_denoise_keeps_edges_and_channels_of_a_cycles_file(cycles_exr, tmp_path)
 def test_clamp_fireflies_removes_a_lone_bright_pixel(tmp_path):
     """A pixel 100x brighter than its object is scaled down to twice its
     neighbours' 75th percentile; the rest is left as it was."""
-    require_command("--clamp-fireflies")
     beauty, _, _, _ = noisy_scene()
     beauty = np.abs(beauty) + 0.1
     beauty[10, 5] = 100.0

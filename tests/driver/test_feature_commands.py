@@ -4,7 +4,7 @@ present in the input, keep object edges, and demodulation round-trips.
 Each test_* function is one CTest test (tests/driver/CMakeLists.txt)."""
 import numpy as np
 
-from conftest import channel, check_failure, noisy_scene, read_image, require_command, run, write_image
+from conftest import channel, check_failure, noisy_scene, read_image, run, write_image
 
 COMBINED = ["My Layer.Combined." + c for c in "RGB"]
 
@@ -12,7 +12,6 @@ COMBINED = ["My Layer.Combined." + c for c in "RGB"]
 def test_feature_commands_keep_object_edges(cycles_exr, tmp_path):
     """The filters read IndexOB, normals, depth and albedo from a Cycles file:
     the two objects (0.2 left, 0.8 right) never mix across the id edge."""
-    require_command("--cross-bilateral")
     src, src_spec = read_image(cycles_exr)
     noisy = np.stack([channel(src, src_spec, n) for n in COMBINED], axis=2)
     width = noisy.shape[1]
@@ -33,7 +32,6 @@ def test_feature_commands_keep_object_edges(cycles_exr, tmp_path):
 def test_demodulate_round_trip_and_chain(cycles_exr, tmp_path):
     """--demodulate then --remodulate gives the beauty back; the albedo 0.5
     of the Cycles file divides the beauty by 0.51."""
-    require_command("--demodulate")
     src, src_spec = read_image(cycles_exr)
     noisy = np.stack([channel(src, src_spec, n) for n in COMBINED], axis=2)
     r = run(cycles_exr, "--demodulate", "-o", tmp_path / "demod.exr")
@@ -55,7 +53,6 @@ def test_demodulate_round_trip_and_chain(cycles_exr, tmp_path):
 def test_feature_commands_without_guides_and_missing_albedo(tmp_path):
     """With a bare beauty the feature filters still run (no feature weight);
     --demodulate needs an albedo guide and says so, writing nothing."""
-    require_command("--nlmeans")
     beauty, _, _, _ = noisy_scene()
     path = write_image(tmp_path / "beauty.exr", beauty, ["R", "G", "B"])
     for command, arg in (("--cross-bilateral", 5), ("--atrous", 2), ("--nlmeans", 3)):

@@ -16,7 +16,7 @@ import OpenImageIO as oiio
 import pytest
 
 from conftest import (MCDTOOL, check_failure, median_reference, noisy_scene, read_image,
-                      require_command, run, write_image)
+                      run, write_image)
 
 BEAUTY = ["R", "G", "B"]
 RENDER = ["R", "G", "B", "A", "id", "reflid", "N.X", "N.Y", "N.Z", "Z"]
@@ -237,7 +237,6 @@ def filtered(src, out, *args):
 
 
 def test_robust_guides_with_other_covering_data_windows(tmp_path):
-    require_command("--object-median")
     beauty, ids, *_ = noisy_scene()
     h, w, _ = beauty.shape
     src = write_image(tmp_path / "beauty.exr", beauty, BEAUTY, fmt="float", origin=(3, -2))
@@ -256,7 +255,6 @@ def test_robust_guides_with_other_covering_data_windows(tmp_path):
 def test_robust_guide_channels_come_in_the_selector_order(tmp_path):
     """A guide picked from scattered channels in another order holds them in
     the order typed: the same result as a file that stores them that way."""
-    require_command("--normal-gaussian")
     beauty, ids, _, _ = noisy_scene()
     rng = np.random.default_rng(11)
     normal = rng.normal(0.0, 1.0, ids.shape + (3,)).astype(np.float32)

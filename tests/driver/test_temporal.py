@@ -16,10 +16,8 @@ import pytest
 
 from conftest import read_image, run, write_image
 
-TESTRENDER = os.environ.get("TESTRENDER")
+TESTRENDER = os.environ["TESTRENDER"]
 EPS = 0.01
-
-pytestmark = pytest.mark.skipif(not TESTRENDER, reason="testrender is not built")
 
 
 def render(directory, scene="shot_truck", frames=range(1, 6), spp=8, seed=1, res="40x32", name="shot"):

@@ -142,4 +142,13 @@ int guide_channels(GuideBit guide)
     return guide == needs_normal || guide == needs_albedo || guide == needs_variance ? 3 : 1;
 }
 
+std::vector<FilterRow> filter_rows(bool (*keep)(const FilterRow&))
+{
+    std::vector<FilterRow> rows;
+    for (const FilterRow& row : filter_table())
+        if (keep(row))
+            rows.push_back(row);
+    return rows;
+}
+
 }  // namespace testfilters

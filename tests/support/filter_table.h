@@ -54,6 +54,11 @@ inline void PrintTo(const FilterRow& row, std::ostream* os) { *os << row.name; }
 /// Every filter of the library, in header order.
 const std::vector<FilterRow>& filter_table();
 
+/// The rows of `filter_table()` for which `keep(row)` is true, for a check
+/// that applies to some filters only (instantiated for those alone, never
+/// skipped).
+std::vector<FilterRow> filter_rows(bool (*keep)(const FilterRow&));
+
 /// The channel count the library expects for each guide role.
 int guide_channels(GuideBit guide);
 
