@@ -12,7 +12,7 @@ namespace mcdtool {
 /// guide planes, results). glibc gives blocks above 128 KiB-32 MiB back to
 /// the kernel when they are freed, so each frame touched fresh pages again:
 /// page faults were three quarters of `--gaussian 3` on a 1080p frame
-/// (docs/benchmark_history.md). Served from the heap and never trimmed, the
+/// (docs/notes/benchmarks.md). Served from the heap and never trimmed, the
 /// next frame reuses the same pages; the peak is what one frame needs anyway.
 inline void keep_freed_memory_for_the_next_frame()
 {

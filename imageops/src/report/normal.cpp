@@ -39,7 +39,7 @@ float normal_weight(const UnitNormal& a, const UnitNormal& b)
 
 // The smallest window radius with smooth windows: the dot-weighted sums
 // cost O(r) per pixel against the exact weights' O(r^2), the same at
-// radius 1 (measured in docs/benchmark_history.md).
+// radius 1 (measured in docs/notes/benchmarks.md).
 constexpr int smooth_radius_min = 2;
 
 // The cosine of the largest angle between neighbouring normals that keeps
