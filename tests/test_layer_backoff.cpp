@@ -239,19 +239,29 @@ TEST(LayerBackoff, AgainstBruteForceAtTheDataWindowsEdges)
     check_against_brute_force(ROI(0, 23, 0, 17), ROI(21, 23, 1, 16), 1, 1);
 }
 
+/// The region the hand-worked cases' blocks cover, and their ROI.
+const ROI small_g(0, 12, 0, 10), small_roi(2, 10, 2, 8);
+
+/// The back-off over `small_roi` of `average` towards `layer` (3 channels
+/// over `small_g`, scale 1): the result, and the error into `error`.
+ImageBuf backed_off(const PixelBlock& average, const PixelBlock& layer, Plane<float>& error)
+{
+    ImageBuf result = result_over(small_roi, average);
+    mcdenoise::BackoffPlanes planes;
+    mcdenoise::back_off_layer(result, average, layer, Plane<float>(small_g, 1.0f), 1, planes,
+                              error);
+    return result;
+}
+
 TEST(LayerBackoff, AnAverageEqualToTheLayerIsKept)
 {
     // e = 0 everywhere: m2 = 0, so a = 0 and the average stays
-    const ROI g(0, 12, 0, 10), roi(2, 10, 2, 8);
-    const auto values      = [](int x, int y, int c) { return 0.1f * float(x * 7 % 5 + y + c); };
-    const PixelBlock layer = block_of(g, 3, values), average = block_of(g, 3, values);
-    const Plane<float> scale(g, 1.0f);
-    ImageBuf result = result_over(roi, average);
-    mcdenoise::BackoffPlanes planes;
+    const auto values = [](int x, int y, int c) { return 0.1f * float(x * 7 % 5 + y + c); };
     Plane<float> error;
-    mcdenoise::back_off_layer(result, average, layer, scale, 1, planes, error);
-    for (int y = roi.ybegin; y < roi.yend; ++y)
-        for (int x = roi.xbegin; x < roi.xend; ++x)
+    const ImageBuf result =
+        backed_off(block_of(small_g, 3, values), block_of(small_g, 3, values), error);
+    for (int y = small_roi.ybegin; y < small_roi.yend; ++y)
+        for (int x = small_roi.xbegin; x < small_roi.xend; ++x)
             for (int c = 0; c < 3; ++c)
                 EXPECT_EQ(result.getchannel(x, y, 0, c), values(x, y, c));
 }
@@ -260,18 +270,13 @@ TEST(LayerBackoff, ABiasWithoutNoiseIsTakenBackWhole)
 {
     // e = 0.5 everywhere, with no spread: s2 = 0 and m2 = 0.25 x 3, so
     // a = 1, the result is the layer's own values and the error 0
-    const ROI g(0, 12, 0, 10), roi(2, 10, 2, 8);
-    const auto values      = [](int x, int y, int c) { return 1.0f + 0.1f * float(x + 2 * y + c); };
-    const PixelBlock layer = block_of(g, 3, values);
+    const auto values = [](int x, int y, int c) { return 1.0f + 0.1f * float(x + 2 * y + c); };
     const PixelBlock average =
-        block_of(g, 3, [&](int x, int y, int c) { return values(x, y, c) + 0.5f; });
-    const Plane<float> scale(g, 1.0f);
-    ImageBuf result = result_over(roi, average);
-    mcdenoise::BackoffPlanes planes;
+        block_of(small_g, 3, [&](int x, int y, int c) { return values(x, y, c) + 0.5f; });
     Plane<float> error;
-    mcdenoise::back_off_layer(result, average, layer, scale, 1, planes, error);
-    for (int y = roi.ybegin; y < roi.yend; ++y)
-        for (int x = roi.xbegin; x < roi.xend; ++x) {
+    const ImageBuf result = backed_off(average, block_of(small_g, 3, values), error);
+    for (int y = small_roi.ybegin; y < small_roi.yend; ++y)
+        for (int x = small_roi.xbegin; x < small_roi.xend; ++x) {
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(result.getchannel(x, y, 0, c), values(x, y, c), 1e-5);
             EXPECT_NEAR(error.at(x, y), 0.0f, 1e-6);

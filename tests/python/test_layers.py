@@ -2,6 +2,8 @@
 the beauty's own per-pixel operator (layers that sum to the beauty sum to
 the result, the beauty unchanged by them), the same pixels as
 `mcdtool --aovs`, and the batch writes what `mcdtool --aovs` writes."""
+import re
+
 import numpy as np
 import OpenImageIO as oiio
 import pytest
@@ -23,6 +25,15 @@ def frames_with_passes(tmp_path_factory):
 def planes(pixels, spec, names):
     index = [list(spec.channelnames).index(n) for n in names]
     return np.ascontiguousarray(pixels[:, :, index])
+
+
+def test_the_docstring_documents_pythons_arguments():
+    """Python takes the C++ terms as sums= and colours=, before roi and
+    nthreads, and its docstring says so."""
+    signature, _, body = mcdenoise.denoise_layers.__doc__.partition("\n")
+    names = re.findall(r"(?:\(|, )(\w+): ", signature)
+    assert names[:7] == ["beauty", "layers", "guides", "sums", "colours", "roi", "nthreads"], signature
+    assert "@param sums" in body and "@param colours" in body and "@param terms" not in body
 
 
 def test_layers_that_sum_to_the_beauty_sum_to_the_result():
