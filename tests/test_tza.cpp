@@ -57,7 +57,8 @@ struct Header {
     int64_t table_offset = -1;
 };
 
-template<class T> void put(std::string& out, T value)
+template<class T>
+void put(std::string& out, T value)
 {
     for (size_t i = 0; i < sizeof(T); ++i)
         out.push_back(char(uint64_t(value) >> (8 * i) & 0xFF));
@@ -195,7 +196,8 @@ std::vector<Malformed> malformed_files()
     m.push_back({ "short header", good.substr(0, 11), "shorter than a .tza header" });
     Header h;
     h.magic = 0x1234;
-    m.push_back({ "magic", write_tza(valid, h), "not a .tza file (magic 0x1234, expected 0x41D7)" });
+    m.push_back(
+        { "magic", write_tza(valid, h), "not a .tza file (magic 0x1234, expected 0x41D7)" });
     h       = {};
     h.major = 1;
     m.push_back({ "major version", write_tza(valid, h), ".tza version 1.0" });
@@ -228,9 +230,13 @@ std::vector<Malformed> malformed_files()
                   "tensor 'enc_conv0.weight': dimension 2 is 0" });
     m.push_back({ "dim above INT_MAX", with([](Entry& e) { e.dims[0] = 0x80000000u; }),
                   "dimension 0 is 2147483648" });
-    m.push_back({ "product overflows", with([](Entry& e) { e.dims = { 1u << 30, 1u << 30, 1u << 30, 1u << 30 }; }),
+    m.push_back({ "product overflows", with([](Entry& e) {
+                      e.dims = { 1u << 30, 1u << 30, 1u << 30, 1u << 30 };
+                  }),
                   "the product of its dimensions overflows" });
-    m.push_back({ "product too big for the file", with([](Entry& e) { e.dims = { 1u << 30, 1u << 30, 4, 1 }; }),
+    m.push_back({ "product too big for the file", with([](Entry& e) {
+                      e.dims = { 1u << 30, 1u << 30, 4, 1 };
+                  }),
                   "data runs past the end of the file" });
     m.push_back({ "layout unknown", with([](Entry& e) { e.layout = "ohwi"; }),
                   "tensor 'enc_conv0.weight': layout \"ohwi\" (known: \"oihw\" or \"x\")" });
@@ -246,9 +252,11 @@ std::vector<Malformed> malformed_files()
                   "layout \"oi\"" });
     m.push_back({ "dtype", with([](Entry& e) { e.dtype = 'd'; }),
                   "tensor 'enc_conv0.weight': data type 100 (known: 'f' float32, 'h' float16)" });
-    m.push_back({ "data past the end", with([&](Entry& e) { e.data_offset = int64_t(good.size()) - 8; }),
+    m.push_back({ "data past the end",
+                  with([&](Entry& e) { e.data_offset = int64_t(good.size()) - 8; }),
                   "tensor 'enc_conv0.weight': data runs past the end of the file (truncated?)" });
-    m.push_back({ "data offset past the end", with([](Entry& e) { e.data_offset = int64_t(1) << 62; }),
+    m.push_back({ "data offset past the end",
+                  with([](Entry& e) { e.data_offset = int64_t(1) << 62; }),
                   "data runs past the end of the file" });
     m.push_back({ "data in the header", with([](Entry& e) { e.data_offset = 2; }),
                   "tensor 'enc_conv0.weight': data at offset 2, inside the header" });
@@ -319,7 +327,8 @@ TEST(Tza, HalfToFloatIsExactForAllValues)
             ASSERT_TRUE(std::isnan(f)) << std::hex << i;
             uint32_t fbits;
             std::memcpy(&fbits, &f, sizeof(fbits));
-            EXPECT_EQ(fbits & 0x7FFFFF, uint32_t(bits & 0x3FF) << 13) << "payload " << std::hex << i;
+            EXPECT_EQ(fbits & 0x7FFFFF, uint32_t(bits & 0x3FF) << 13)
+                << "payload " << std::hex << i;
         } else {
             ASSERT_EQ(double(f), want) << std::hex << i;
         }
@@ -336,8 +345,11 @@ struct Conv {
     bool with_input;
 };
 
-/// OIDN 2.x's three UNets (training/model.py: UNet, UNetSmall, UNetLarge),
-/// every convolution 3x3; input channels added by the caller.
+/// OIDN 2.x's three UNets, every convolution 3x3, input channels added by
+/// the caller: the default as OIDN's training/model.py builds it (channels
+/// 32, 48, 64, 80, 96 down, 112, 96, 64, 64, 32 up, each decoder stage
+/// taking the pooled encoder output of its level), the small and the large
+/// as the published files hold them (recorded 2026-12-07).
 const std::vector<Conv> unet_base = {
     { "enc_conv0", 0, 32, true },      { "enc_conv1", 32, 32, false },
     { "enc_conv2", 32, 48, false },    { "enc_conv3", 48, 64, false },
@@ -349,25 +361,25 @@ const std::vector<Conv> unet_base = {
     { "dec_conv1b", 64, 32, false },   { "dec_conv0", 32, 3, false },
 };
 const std::vector<Conv> unet_small = {
-    { "enc_conv0", 0, 32, true },     { "enc_conv1", 32, 32, false },
-    { "enc_conv2", 32, 32, false },   { "enc_conv3", 32, 32, false },
-    { "enc_conv4", 32, 32, false },   { "enc_conv5a", 32, 32, false },
-    { "enc_conv5b", 32, 32, false },  { "dec_conv4a", 32 + 32, 64, false },
-    { "dec_conv4b", 64, 64, false },  { "dec_conv3a", 64 + 32, 64, false },
-    { "dec_conv3b", 64, 64, false },  { "dec_conv2a", 64 + 32, 64, false },
-    { "dec_conv2b", 64, 32, false },  { "dec_conv1a", 32, 32, true },
-    { "dec_conv1b", 32, 32, false },  { "dec_conv0", 32, 3, false },
+    { "enc_conv0", 0, 32, true },    { "enc_conv1", 32, 32, false },
+    { "enc_conv2", 32, 32, false },  { "enc_conv3", 32, 32, false },
+    { "enc_conv4", 32, 32, false },  { "enc_conv5a", 32, 32, false },
+    { "enc_conv5b", 32, 32, false }, { "dec_conv4a", 32 + 32, 64, false },
+    { "dec_conv4b", 64, 64, false }, { "dec_conv3a", 64 + 32, 64, false },
+    { "dec_conv3b", 64, 64, false }, { "dec_conv2a", 64 + 32, 64, false },
+    { "dec_conv2b", 64, 32, false }, { "dec_conv1a", 32, 32, true },
+    { "dec_conv1b", 32, 32, false }, { "dec_conv0", 32, 3, false },
 };
 const std::vector<Conv> unet_large = {
-    { "enc_conv1a", 0, 64, true },      { "enc_conv1b", 64, 64, false },
-    { "enc_conv2a", 64, 96, false },    { "enc_conv2b", 96, 96, false },
-    { "enc_conv3a", 96, 128, false },   { "enc_conv3b", 128, 128, false },
-    { "enc_conv4a", 128, 192, false },  { "enc_conv4b", 192, 192, false },
-    { "enc_conv5a", 192, 256, false },  { "enc_conv5b", 256, 256, false },
+    { "enc_conv1a", 0, 64, true },           { "enc_conv1b", 64, 64, false },
+    { "enc_conv2a", 64, 96, false },         { "enc_conv2b", 96, 96, false },
+    { "enc_conv3a", 96, 128, false },        { "enc_conv3b", 128, 128, false },
+    { "enc_conv4a", 128, 192, false },       { "enc_conv4b", 192, 192, false },
+    { "enc_conv5a", 192, 256, false },       { "enc_conv5b", 256, 256, false },
     { "dec_conv4a", 256 + 128, 192, false }, { "dec_conv4b", 192, 192, false },
     { "dec_conv3a", 192 + 96, 128, false },  { "dec_conv3b", 128, 128, false },
     { "dec_conv2a", 128 + 64, 96, false },   { "dec_conv2b", 96, 96, false },
-    { "dec_conv1a", 96, 64, true },     { "dec_conv1b", 64, 64, false },
+    { "dec_conv1a", 96, 64, true },          { "dec_conv1b", 64, 64, false },
     { "dec_conv1c", 64, 3, false },
 };
 
@@ -424,7 +436,8 @@ void check_unet(const WeightFile& wf, const TensorMap& tensors)
             ADD_FAILURE() << wf.file << ": no " << c.name << ".weight or .bias";
             continue;
         }
-        EXPECT_EQ(w->second.dims, (std::vector<int> { c.out, in, 3, 3 })) << wf.file << " " << c.name;
+        EXPECT_EQ(w->second.dims, (std::vector<int> { c.out, in, 3, 3 }))
+            << wf.file << " " << c.name;
         EXPECT_EQ(w->second.layout, "oihw") << wf.file << " " << c.name;
         EXPECT_EQ(b->second.dims, (std::vector<int> { c.out })) << wf.file << " " << c.name;
         EXPECT_EQ(b->second.layout, "x") << wf.file << " " << c.name;
@@ -436,7 +449,7 @@ void check_unet(const WeightFile& wf, const TensorMap& tensors)
 
 TEST(TzaWeights, EveryOidnWeightFileHasItsUNetsShapes)
 {
-    namespace fs        = std::filesystem;
+    namespace fs          = std::filesystem;
     const std::string dir = weights_dir();
     ASSERT_TRUE(fs::is_directory(dir))
         << "the weights folder " << dir

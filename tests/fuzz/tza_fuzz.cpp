@@ -23,14 +23,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     std::string error;
     if (!mcdenoise::parse_tza(data, size, source, tensors, error)) {
         mcdfuzz::require(tensors.empty(), "a failed parse left tensors");
-        mcdfuzz::require(error.rfind(source + ": ", 0) == 0, "the error names the source: " + error);
+        mcdfuzz::require(error.rfind(source + ": ", 0) == 0,
+                         "the error names the source: " + error);
         return 0;
     }
     for (const auto& [name, t] : tensors) {
         mcdfuzz::require(name == t.name && !name.empty(), "the tensor is filed under its name");
         mcdfuzz::require(!t.dims.empty() && int(t.dims.size()) <= mcdenoise::tza_max_dims,
                          "1 to 4 dimensions: " + name);
-        mcdfuzz::require(t.layout.size() == t.dims.size(), "a layout character per dimension: " + name);
+        mcdfuzz::require(t.layout.size() == t.dims.size(),
+                         "a layout character per dimension: " + name);
         size_t count = 1;
         for (int d : t.dims) {
             mcdfuzz::require(d > 0, "dimensions are positive: " + name);

@@ -25,8 +25,8 @@ constexpr uint32_t half_exponent_max = 0x1F;
 /// A float32's exponent field of infinities and NaNs.
 constexpr uint32_t float_exponent_max = 0xFF;
 /// The data types of a tensor and their sizes in bytes.
-constexpr char dtype_float32 = 'f';
-constexpr char dtype_float16 = 'h';
+constexpr char dtype_float32   = 'f';
+constexpr char dtype_float16   = 'h';
 constexpr size_t float32_bytes = 4;
 constexpr size_t float16_bytes = 2;
 /// The layouts this reader knows: a convolution's weights, a bias.
@@ -51,7 +51,8 @@ public:
     }
 
     /// Reads an unsigned little-endian integer of sizeof(T) bytes.
-    template<class T> bool read(T& value)
+    template<class T>
+    bool read(T& value)
     {
         if (size_ - pos_ < sizeof(T))
             return false;
@@ -103,8 +104,8 @@ void convert_values(const unsigned char* bytes, size_t count, char dtype, std::v
     if (dtype == dtype_float32) {
         for (size_t i = 0; i < count; ++i) {
             const unsigned char* b = bytes + i * float32_bytes;
-            const uint32_t bits    = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16
-                                  | uint32_t(b[3]) << 24;
+            const uint32_t bits =
+                uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
             std::memcpy(&out[i], &bits, sizeof(bits));
         }
     } else {
@@ -130,9 +131,9 @@ bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t in
         error = entry + ": empty name";
         return false;
     }
-    const std::string what = "tensor '" + t.name + "'";
+    const std::string what      = "tensor '" + t.name + "'";
     const std::string truncated = what + ": the table runs past the end of the file (truncated?)";
-    uint8_t ndims = 0;
+    uint8_t ndims               = 0;
     if (!in.read(ndims)) {
         error = truncated;
         return false;
@@ -162,7 +163,7 @@ bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t in
         count *= dim;
         t.dims[d] = int(dim);
     }
-    uint8_t dtype = 0;
+    uint8_t dtype   = 0;
     uint64_t offset = 0;
     if (!in.read_string(ndims, t.layout) || !in.read(dtype) || !in.read(offset)) {
         error = truncated;
@@ -173,7 +174,8 @@ bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t in
         return false;
     }
     if (dtype != uint8_t(dtype_float32) && dtype != uint8_t(dtype_float16)) {
-        error = what + ": data type " + std::to_string(dtype) + " (known: 'f' float32, 'h' float16)";
+        error =
+            what + ": data type " + std::to_string(dtype) + " (known: 'f' float32, 'h' float16)";
         return false;
     }
     const size_t element = dtype == uint8_t(dtype_float32) ? float32_bytes : float16_bytes;
@@ -194,12 +196,12 @@ bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t in
 
 float half_to_float(uint16_t bits)
 {
-    const uint32_t sign     = uint32_t(bits >> 15) << 31;
-    const uint32_t exponent = (bits >> half_mantissa_bits) & half_exponent_max;
-    uint32_t mantissa       = bits & ((1u << half_mantissa_bits) - 1);
-    constexpr int shift     = float_mantissa_bits - half_mantissa_bits;
+    const uint32_t sign       = uint32_t(bits >> 15) << 31;
+    const uint32_t exponent   = (bits >> half_mantissa_bits) & half_exponent_max;
+    uint32_t mantissa         = bits & ((1u << half_mantissa_bits) - 1);
+    constexpr int shift       = float_mantissa_bits - half_mantissa_bits;
     constexpr uint32_t rebias = float_exponent_bias - half_exponent_bias;
-    uint32_t out = sign;
+    uint32_t out              = sign;
     if (exponent == half_exponent_max) {
         // infinity, or a NaN keeping its payload
         out |= float_exponent_max << float_mantissa_bits | mantissa << shift;
@@ -280,7 +282,8 @@ bool read_tza(const std::string& path, TensorMap& tensors, std::string& error)
         error = path + ": cannot be opened (" + std::strerror(errno) + ")";
         return false;
     }
-    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string bytes((std::istreambuf_iterator<char>(file)),
+                            std::istreambuf_iterator<char>());
     if (file.bad()) {
         error = path + ": cannot be read (" + std::strerror(errno) + ")";
         return false;
