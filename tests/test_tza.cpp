@@ -272,6 +272,16 @@ std::vector<Malformed> malformed_files()
     twice[1].dtype           = twice[0].dtype;
     twice[1].data            = twice[0].data;
     m.push_back({ "duplicate", write_tza(twice), "tensor 'enc_conv0.weight' appears twice" });
+    std::vector<Entry> overlapping = valid;
+    for (int i = 0; i < 10; ++i) {
+        Entry again       = valid[0];
+        again.name        = "copy" + std::to_string(i);
+        again.data_offset = int64_t(mcdenoise::tza_header_size);
+        again.data.clear();
+        overlapping.push_back(again);
+    }
+    m.push_back({ "overlapping data", write_tza(overlapping),
+                  "the tensors' data add up to more than the file (overlapping data?)" });
     return m;
 }
 

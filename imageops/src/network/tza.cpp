@@ -117,9 +117,12 @@ void convert_values(const unsigned char* bytes, size_t count, char dtype, std::v
 }
 
 /// Parses one table entry into `t`; on failure `error` says what is wrong
-/// (without the source, which the caller adds).
+/// (without the source, which the caller adds). `unclaimed` is the bytes of
+/// the file past the header that earlier tensors' data have not taken: the
+/// data of all tensors cannot add up to more than the file, so overlapping
+/// tensors cannot make the values outgrow it.
 bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t index, Tensor& t,
-                 std::string& error)
+                 uint64_t& unclaimed, std::string& error)
 {
     const std::string entry = "tensor #" + std::to_string(index);
     uint16_t name_length    = 0;
@@ -188,6 +191,11 @@ bool parse_entry(Cursor& in, const unsigned char* data, size_t size, uint32_t in
         error = what + ": data runs past the end of the file (truncated?)";
         return false;
     }
+    if (count * element > unclaimed) {
+        error = what + ": the tensors' data add up to more than the file (overlapping data?)";
+        return false;
+    }
+    unclaimed -= count * element;
     convert_values(data + offset, size_t(count), char(dtype), t.values);
     return true;
 }
@@ -256,10 +264,11 @@ bool parse_tza(const void* data, size_t size, const std::string& source, TensorM
         return false;
     }
     TensorMap read;
+    uint64_t unclaimed = size - tza_header_size;
     for (uint32_t i = 0; i < count; ++i) {
         Tensor t;
         std::string what;
-        if (!parse_entry(in, bytes, size, i, t, what)) {
+        if (!parse_entry(in, bytes, size, i, t, unclaimed, what)) {
             error = source + ": " + what;
             return false;
         }

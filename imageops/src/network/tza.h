@@ -53,7 +53,8 @@ float half_to_float(uint16_t bits);
 /// or truncated name, a duplicate name, 0 or more than `tza_max_dims`
 /// dimensions, a zero dimension or a product that overflows, a layout other
 /// than "x" or "oihw" (or not matching the dimensions), a data type other
-/// than 'f' (float32) or 'h' (float16).
+/// than 'f' (float32) or 'h' (float16), tensors whose data add up to more
+/// than the file (overlapping).
 bool parse_tza(const void* data, size_t size, const std::string& source, TensorMap& tensors,
                std::string& error);
 
