@@ -20,3 +20,8 @@ install(FILES ${CMAKE_BINARY_DIR}/mcdenoiseConfig.cmake
               ${CMAKE_CURRENT_LIST_DIR}/OpenImageIOIncludeFix.cmake
               ${CMAKE_BINARY_DIR}/mcdenoiseConfigVersion.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/mcdenoise)
+# OIDN 2.x's trained weights (Apache-2.0, their licence beside them as
+# LICENSE-weights.txt), from MCD_WEIGHTS_DIR, where scripts/fetch-weights
+# puts them; skipped when that folder does not exist at install time.
+install(DIRECTORY "${MCD_WEIGHTS_DIR}/" DESTINATION ${CMAKE_INSTALL_DATADIR}/mcdenoise/weights OPTIONAL
+        FILES_MATCHING PATTERN "*.tza" PATTERN "LICENSE-weights.txt")

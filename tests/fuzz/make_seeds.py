@@ -1,10 +1,12 @@
 """Writes the committed seed corpora of the fuzz targets (tests/fuzz/corpus/):
 command lines for `driver` (one argument per line, naming the files its
 scratch directory holds), small EXR files of every kind for `exr`, and byte
-strings for `filter`. Run once with /usr/bin/python3 when a target's input
+strings for `filter`, and small hand-made .tza files (valid and broken, never
+the real weights) for `tza`. Run once with /usr/bin/python3 when a target's input
 format changes; the fuzzer grows its own corpus from these in build-fuzz/."""
 import os
 import random
+import struct
 
 import numpy as np
 import OpenImageIO as oiio
@@ -76,9 +78,58 @@ def write_filter_seeds():
             f.write(bytes(rng.randrange(256) for _ in range(length)))
 
 
+def tza_bytes(tensors, magic=0x41D7, version=(2, 0), table_offset=None):
+    """A .tza file (OIDN 2.x, docs/network.md): the header, every tensor's
+    data, then the table; each tensor is (name, dims, layout, dtype, data)."""
+    out = bytearray(struct.pack("<HBBQ", magic, version[0], version[1], 0))
+    offsets = []
+    for _, _, _, _, data in tensors:
+        offsets.append(len(out))
+        out += data
+    table = len(out) if table_offset is None else table_offset
+    out[4:12] = struct.pack("<Q", table)
+    out += struct.pack("<I", len(tensors))
+    for (name, dims, layout, dtype, _), offset in zip(tensors, offsets):
+        encoded = name.encode()
+        out += struct.pack("<H", len(encoded)) + encoded + struct.pack("<B", len(dims))
+        out += struct.pack("<%dI" % len(dims), *dims) + layout.encode() + dtype.encode()
+        out += struct.pack("<Q", offset)
+    return bytes(out)
+
+
+def write_tza_seeds():
+    out = os.path.join(HERE, "corpus", "tza")
+    os.makedirs(out, exist_ok=True)
+    rng = random.Random(3)
+    weight = struct.pack("<18f", *[rng.uniform(-1, 1) for _ in range(18)])
+    halves = struct.pack("<18e", *[rng.uniform(-1, 1) for _ in range(18)])
+    valid = [("enc_conv0.weight", (2, 1, 3, 3), "oihw", "f", weight),
+             ("enc_conv0.bias", (2,), "x", "h", struct.pack("<2e", 0.5, -0.25))]
+    special = struct.pack("<6H", 0x0001, 0x03FF, 0x7C00, 0xFC00, 0x7E01, 0x8000)  # subnormals, infinities, NaN, -0
+    seeds = {
+        "valid_float32.tza": tza_bytes(valid),
+        "valid_float16.tza": tza_bytes([("dec_conv0.weight", (1, 2, 3, 3), "oihw", "h", halves),
+                                        ("dec_conv0.bias", (6,), "x", "h", special)]),
+        "empty_table.tza": tza_bytes([]),
+        "bad_magic.tza": tza_bytes(valid, magic=0x1234),
+        "bad_version.tza": tza_bytes(valid, version=(1, 0)),
+        "table_past_end.tza": tza_bytes(valid, table_offset=4096),
+        "truncated.tza": tza_bytes(valid)[:-5],
+        "duplicate.tza": tza_bytes([valid[0], valid[0]]),
+        "bad_dtype.tza": tza_bytes([("w", (2,), "x", "d", weight)]),
+        "bad_layout.tza": tza_bytes([("w", (2, 9), "oi", "f", weight)]),
+        "zero_dim.tza": tza_bytes([("w", (0,), "x", "f", b"")]),
+        "data_past_end.tza": tza_bytes([("w", (1000,), "x", "f", weight)]),
+    }
+    for name, data in seeds.items():
+        with open(os.path.join(out, name), "wb") as f:
+            f.write(data)
+
+
 if __name__ == "__main__":
-    for target in ("driver", "exr", "filter"):
+    for target in ("driver", "exr", "filter", "tza"):
         os.makedirs(os.path.join(HERE, "corpus", target), exist_ok=True)
     write_driver_seeds()
     write_exr_seeds()
     write_filter_seeds()
+    write_tza_seeds()

@@ -23,6 +23,7 @@ BUILDS_ON = {
     "denoise": {"core", "walkers", "features"},
     "shots": {"core", "walkers", "features", "denoise"},
     "passes": {"core", "walkers", "features", "denoise"},
+    "network": {"core"},
     "metrics": {"core"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
