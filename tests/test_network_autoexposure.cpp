@@ -115,6 +115,7 @@ TEST(NetworkAutoexposure, BinsAsOidnCountsThem)
     EXPECT_EQ(autoexposure_bins(16), 1);
     EXPECT_EQ(autoexposure_bins(17), 2);
     EXPECT_EQ(autoexposure_bins(33), 3);
+    EXPECT_EQ(autoexposure_bins(2147483647), 134217728);
     // 17 pixels in 2 bins: 0-7 and 8-16; 33 in 3: 0-10, 11-21, 22-32.
     EXPECT_EQ(autoexposure_bin_begin(1, 17, 2), 8);
     EXPECT_EQ(autoexposure_bin_begin(1, 33, 3), 11);

@@ -56,7 +56,7 @@ void add_band(const std::vector<double>& sums, const std::vector<int>& begins, i
 
 int autoexposure_bins(int size)
 {
-    return (size + autoexposure_bin_size - 1) / autoexposure_bin_size;
+    return int((static_cast<long long>(size) + autoexposure_bin_size - 1) / autoexposure_bin_size);
 }
 
 int autoexposure_bin_begin(int i, int size, int bins)
