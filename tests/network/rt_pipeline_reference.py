@@ -26,8 +26,8 @@ reader are tests/network/unet_reference.py's.
   takes the _large file where there is one, balanced the base file, fast the
   _small file where there is one (rt_alb and rt_nrm have none).
 
-Everything in float32, as OIDN computes it on the CPU, except the
-autoexposure's sums (float64).
+Everything in float32, as OIDN computes it on the CPU, except the mean of
+the bins' log2 (float64).
 
 The image: bare R,G,B (the beauty) and the guides mcdtool finds in the same
 (unnamed) layer: albedo as albedo, Denoising Albedo, denoise_albedo or
@@ -128,9 +128,9 @@ def autoexposure(color):
     bins_h, bins_w = -(-h // AUTOEXPOSURE_BIN), -(-w // AUTOEXPOSURE_BIN)
     edges_h = np.array([i * h // bins_h for i in range(bins_h + 1)])
     edges_w = np.array([j * w // bins_w for j in range(bins_w + 1)])
-    sums = np.add.reduceat(np.add.reduceat(luminance.astype(np.float64), edges_h[:-1], axis=0),
-                           edges_w[:-1], axis=1)
-    means = (sums / np.outer(np.diff(edges_h), np.diff(edges_w))).astype(np.float32)
+    with np.errstate(over="ignore"):  # a bin of several FLT_MAX pixels sums to inf, as in OIDN
+        sums = np.add.reduceat(np.add.reduceat(luminance, edges_h[:-1], axis=0), edges_w[:-1], axis=1)
+    means = (sums / np.outer(np.diff(edges_h), np.diff(edges_w)).astype(np.float32)).astype(np.float32)
     kept = means[means > AUTOEXPOSURE_EPS]
     if kept.size == 0:
         return np.float32(1)
@@ -198,7 +198,8 @@ def filter_normal(tensors, normal):
 def filter_beauty(tensors, color, albedo, normal):
     """The HDR colour, with the guides given, through its network."""
     scale = autoexposure(color)
-    planes = [pu_forward(sanitise(color * scale, 0, FLT_MAX)) * PU_NORM]
+    with np.errstate(invalid="ignore"):  # inf x 0 is NaN, then 0
+        planes = [pu_forward(sanitise(color * scale, 0, FLT_MAX)) * PU_NORM]
     if albedo is not None:
         planes.append(sanitise(albedo, 0, 1))
     if normal is not None:
