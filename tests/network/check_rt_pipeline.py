@@ -47,7 +47,6 @@ except ImportError as e:
 
 TOLERANCE = 1e-4
 EPSILON = 0.01  # the relative difference's floor
-QUALITIES = ("fast", "balanced", "high")
 
 # name, width, height, the beauty's channels, the albedo's, the normal's
 IMAGES = [
@@ -56,7 +55,7 @@ IMAGES = [
      ["Denoising Normal.X", "Denoising Normal.Y", "Denoising Normal.Z"]),
 ]
 # image, mcdtool's options, the reference's quality and prefilter
-CASES = ([(image[0], [f"--denoise:quality={q}"], q, True) for image in IMAGES for q in QUALITIES]
+CASES = ([(image[0], [f"--denoise:quality={q}"], q, True) for image in IMAGES for q in reference.QUALITIES]
          + [(IMAGES[0][0], ["--denoise:prefilter=0"], "high", False)])
 
 
