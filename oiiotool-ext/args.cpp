@@ -58,12 +58,44 @@ bool is_known_name(const std::string& arg)
     if (arg.size() < 2 || arg[0] != '-')
         return false;
     std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
-    if (find_command(name))
+    if (find_command(name.substr(0, name.find(':'))))
         return true;
     for (const OptionSpec& option : option_table())
         if (name == option.name)
             return true;
     return false;
+}
+
+/// Parses `:KEY=VALUE[:KEY=VALUE...]` after `command`'s name (`typed`,
+/// empty or starting with ':'), checking each key and value against the
+/// command's row.
+ModifierValues parse_modifiers(const Command& command, const std::string& arg, const std::string& typed)
+{
+    ModifierValues values;
+    if (typed.empty())
+        return values;
+    for (const std::string& item : OIIO::Strutil::splits(typed.substr(1), ":")) {
+        const size_t equals = item.find('=');
+        const std::string key = item.substr(0, equals);
+        const Modifier* modifier = nullptr;
+        std::vector<std::string> keys;
+        for (const Modifier& m : command.modifiers) {
+            keys.push_back(m.key);
+            if (key == m.key)
+                modifier = &m;
+        }
+        if (!modifier)
+            throw UsageError(format("{} : unknown modifier '{}' ({})", arg, key,
+                                    keys.empty() ? std::string("--") + command.name + " takes none"
+                                                 : "it takes " + OIIO::Strutil::join(keys, ", ")));
+        const std::string value = equals == std::string::npos ? "" : item.substr(equals + 1);
+        std::vector<std::string> allowed(modifier->values.begin(), modifier->values.end());
+        if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+            throw UsageError(format("{} : {} must be one of {}, got '{}'", arg, key,
+                                    OIIO::Strutil::join(allowed, ", "), value));
+        values[key] = value;
+    }
+    return values;
 }
 
 /// Parses "ROLE=FILE[:CHANNELS]".
@@ -137,7 +169,7 @@ const std::vector<OptionSpec>& option_table()
           "channels replaced, in the input's pixel type and compression (a format that cannot keep every channel "
           "by name, like PNG or TIFF, gets the beauty only); the folder is made if missing. Atomic (temp file + "
           "rename); a replaced file keeps its mode, a write-protected one needs --force.",
-          [](Options& o, const std::vector<std::string>& a) { o.steps.push_back(Step{ nullptr, {}, a[0] }); } },
+          [](Options& o, const std::vector<std::string>& a) { o.steps.push_back(Step{ nullptr, {}, {}, a[0] }); } },
         { "d", { "TYPE" }, "Output", "Pixel type of the outputs: half, float, uint8, uint16 or uint32.",
           [](Options& o, const std::vector<std::string>& a) {
               require_one_of("-d", a[0], data_formats);
@@ -278,6 +310,8 @@ Options parse_command_line(const std::vector<std::string>& args)
             continue;
         }
         std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
+        const std::string typed_modifiers = name.find(':') == std::string::npos ? "" : name.substr(name.find(':'));
+        name = name.substr(0, name.find(':'));
         const Command* command = find_command(name);
         const OptionSpec* option = nullptr;
         for (const OptionSpec& spec : option_table())
@@ -299,6 +333,8 @@ Options parse_command_line(const std::vector<std::string>& args)
             values.push_back(args[at]);
         }
         i += nparams;
+        if (option && !typed_modifiers.empty())
+            throw UsageError(format("{} : options take no ':' modifiers", arg));
         if (option) {
             option->apply(options, values);
             continue;
@@ -312,7 +348,7 @@ Options parse_command_line(const std::vector<std::string>& args)
                                         values[p], usage));
             require_in_range(arg, param, values[p]);
         }
-        options.steps.push_back(Step{ command, values, "" });
+        options.steps.push_back(Step{ command, values, parse_modifiers(*command, arg, typed_modifiers), "" });
     }
 
     if (options.mode != Mode::run)

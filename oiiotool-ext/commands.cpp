@@ -28,6 +28,19 @@ const ImageBuf& Call::guide(Role role) const { return guides.images.at(role); }
 
 const ImageBuf* Call::optional_guide(Role role) const { return present(guides, role); }
 
+std::string Call::modifier(const char* key) const
+{
+    if (modifiers) {
+        const auto typed = modifiers->find(key);
+        if (typed != modifiers->end())
+            return typed->second;
+    }
+    for (const Modifier& m : command->modifiers)
+        if (std::string_view(m.key) == key)
+            return m.values.front();
+    return "";
+}
+
 mcdenoise::Guides library_guides(const GuideImages& images)
 {
     mcdenoise::Guides guides;
@@ -99,12 +112,52 @@ const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
     return *frame.prepared;
 }
 
-/// --denoise: the cross-frame form when the call has neighbours, of the
-/// frames as their window prepared them (with no neighbour on disk the
-/// single-frame form, which that equals bit for bit).
+/// --denoise on the network (denoise_network.h): the quality and the
+/// prefilter as the modifiers say; with -v each phase's time.
+bool network_denoise(const Call& c)
+{
+    mcdenoise::NetworkOptions options;
+    mcdenoise::parse_network_quality(c.modifier("quality"), options.quality);
+    options.prefilter_guides = c.modifier("prefilter") == "1";
+    options.memory_limit     = c.memory_limit;
+    if (c.verbose)
+        options.on_phase = [](const std::string& phase, double seconds) {
+            std::printf("mcdtool: --denoise   %s  %.3f s\n", phase.c_str(), seconds);
+        };
+    mcdenoise::Guides guides;
+    guides.albedo = c.optional_guide(Role::albedo);
+    guides.normal = c.optional_guide(Role::normal);
+    return mcdenoise::denoise_network(c.dst, c.beauty, guides, options, {}, c.nthreads);
+}
+
+/// The one-line note that --denoise runs the NL-means operator where the
+/// network has no mode yet (light passes, frames), printed once a run.
+void note_network_fallback(const char* what)
+{
+    static bool noted = false;
+    if (noted)
+        return;
+    noted = true;
+    std::fprintf(stderr,
+                 "mcdtool: note: --denoise with %s runs the NL-means operator (the network has no "
+                 "such mode yet); --denoise:method=nlm chooses it explicitly\n",
+                 what);
+}
+
+/// --denoise: the network unless `method=nlm`, or light passes or frames
+/// ask for the NL-means operator; then the cross-frame form when the call
+/// has neighbours, of the frames as their window prepared them (with no
+/// neighbour on disk the single-frame form, which that equals bit for
+/// bit).
 bool denoise_call(const Call& c)
 {
-    if (c.layers && !c.layers->images.empty())
+    const bool layered = c.layers && !c.layers->images.empty();
+    if (c.modifier("method") == "network") {
+        if (!layered && !c.neighbours)
+            return network_denoise(c);
+        note_network_fallback(layered ? "--aovs" : "--temporal");
+    }
+    if (layered)
         return denoise_layers(c);
     if (!c.neighbours || c.neighbours->empty())
         return mcdenoise::denoise(c.dst, c.beauty, feature_guides(c), {}, c.nthreads);
@@ -238,13 +291,26 @@ const std::vector<Command>& command_table()
                                         mcdenoise::default_nlmeans_strength, {}, {}, c.nthreads);
           },
           roles_of(mcdenoise::nlmeans_guides) },
-        { "denoise", "denoise", "denoise.h", {}, {},
-          "The one-call denoiser: takes the firefly excess out, runs non-local means with the "
+        { "denoise", "denoise_network", "denoise_network.h", {}, {},
+          "The one-call denoiser. By default Open Image Denoise 2.x's trained networks (its "
+          "published weights, run by mcdenoise's own engine) with OIDN's pipeline: autoexposure, "
+          "the albedo and normal guides prefiltered, the beauty's network at high quality. With "
+          ":method=nlm (and, until the network has those modes, with --aovs or --temporal) the "
+          "NL-means operator: takes the firefly excess out, runs non-local means with the "
           "variance (from the variance guide, the halves, or estimated) and the feature weight of "
           "every guide present, and spreads the excess back over its neighbourhood, so the frame "
           "keeps its energy.",
           "mcdtool render.exr --denoise -o clean.exr",
-          denoise_call, roles_of(mcdenoise::denoise_guides), true },
+          denoise_call, roles_of(mcdenoise::denoise_guides), true,
+          { { "method", { "network", "nlm" },
+              "network: Open Image Denoise 2.x's trained networks on the albedo and normal "
+              "guides (docs/network.md); nlm: the NL-means operator below, network-free" },
+            { "quality", { "high", "balanced", "fast" },
+              "the network's size: high runs OIDN's large networks (its default), balanced the "
+              "default ones, fast the small ones" },
+            { "prefilter", { "1", "0" },
+              "1: the albedo and normal guides are denoised by their own networks first "
+              "(Blender's Accurate prefilter); 0: taken as they are" } } },
         { "clamp-fireflies", "clamp_fireflies", "fireflies.h", { factor_param }, {},
           format("Scale down pixels brighter than FACTOR times the 75th-percentile luminance of their "
                  "{0}x{0} neighbours (of the same object when an id guide is present).",

@@ -9,6 +9,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <string>
@@ -39,6 +40,17 @@ struct Param {
     bool odd = false;   ///< only odd values (window sides)
 };
 
+/// A modifier a command takes after its name, `--name:KEY=VALUE`
+/// (oiiotool's convention), e.g. `--denoise:quality=balanced`.
+struct Modifier {
+    const char* key;
+    std::vector<const char*> values;  ///< the values allowed, the default first
+    const char* help;
+};
+
+/// Modifiers as typed, by key.
+using ModifierValues = std::map<std::string, std::string>;
+
 /// Guide images by role, each with a note saying where it came from.
 struct GuideImages {
     std::map<Role, ImageBuf> images;
@@ -60,6 +72,8 @@ struct WindowFrame {
     mcdenoise::PreparedFrame* prepared;
 };
 
+struct Command;
+
 /// What a command's library call receives.
 struct Call {
     ImageBuf& dst;
@@ -75,6 +89,12 @@ struct Call {
     const WindowFrame* centre = nullptr;
     /// The light passes (--aovs) a command that takes them denoises in place.
     LightLayers* layers = nullptr;
+    /// The modifiers typed after the command's name (validated at parse time).
+    const ModifierValues* modifiers = nullptr;
+    /// --memory-limit in bytes (0: none given).
+    uint64_t memory_limit = 0;
+    /// -v: the command may print the times of its phases.
+    bool verbose = false;
 
     /// Parameter `i` as an int (validated at parse time).
     int integer(size_t i) const;
@@ -84,6 +104,11 @@ struct Call {
     const ImageBuf& guide(Role role) const;
     /// The guide for `role` if the input or an --aov gave one, else nullptr.
     const ImageBuf* optional_guide(Role role) const;
+    /// The modifier `key` as typed, else its default (the first value the
+    /// command's row allows).
+    std::string modifier(const char* key) const;
+    /// The command's row (for its modifiers' defaults).
+    const Command* command = nullptr;
 };
 
 /// A library call with the driver's calling convention.
@@ -101,6 +126,7 @@ struct Command {
     CallFn call;
     std::vector<Role> optional_roles = {};  ///< guides it uses when present
     bool takes_layers = false;     ///< denoises the --aovs light passes with the beauty
+    std::vector<Modifier> modifiers = {};  ///< the `:KEY=VALUE` modifiers it takes
 };
 
 /// Every command, in help order.

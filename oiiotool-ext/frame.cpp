@@ -126,16 +126,28 @@ struct WindowFrames {
 };
 
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
-/// errors forwarded; with `verbose`, its time is printed. With `window`,
+/// errors forwarded; with `verbose`, its time is printed. `memory_limit`
+/// (bytes, 0 for none) bounds the network's working memory. With `window`,
 /// the command takes its frames (--denoise across frames).
 ImageBuf run_command(const Step& step, const ImageBuf& current, const GuideImages& guides, LightLayers& layers,
-                     int nthreads, bool verbose, RunStats& stats, const WindowFrames* window)
+                     int nthreads, bool verbose, uint64_t memory_limit, RunStats& stats,
+                     const WindowFrames* window)
 {
     const Command& command = *step.command;
     std::string name = dashed(command.name);
     ImageBuf dst;
-    Call call{ dst, current, guides, step.values, nthreads, window ? &window->neighbours : nullptr,
-               window ? &window->centre : nullptr, command.takes_layers ? &layers : nullptr };
+    Call call{ dst,
+               current,
+               guides,
+               step.values,
+               nthreads,
+               window ? &window->neighbours : nullptr,
+               window ? &window->centre : nullptr,
+               command.takes_layers ? &layers : nullptr,
+               &step.modifiers,
+               memory_limit,
+               verbose,
+               &command };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);
@@ -225,8 +237,8 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
     for (const Step& step : options.steps) {
         if (step.command) {
             const bool across_frames = options.temporal > 0 && frame && first_command;
-            current = run_command(step, current, guides, layers, options.threads, options.verbose, stats,
-                                  across_frames ? &loaded.window : nullptr);
+            current = run_command(step, current, guides, layers, options.threads, options.verbose,
+                                  options.memory_limit_mb << 20, stats, across_frames ? &loaded.window : nullptr);
             first_command = false;
             continue;
         }

@@ -175,6 +175,9 @@ std::string help_text()
         if (uses_guides(command))
             help += " Guides: " + roles_text(command) + ".";
         text += help_row(command_usage(command), help);
+        for (const Modifier& modifier : command.modifiers)
+            text += help_row(format("  :{}={}", modifier.key, OIIO::Strutil::join(modifier.values, "|")),
+                             format("{} (default {}).", modifier.help, modifier.values.front()));
     }
     text += "\nGuide roles (found in the input, or --aov ROLE=FILE[:CHANNELS]):\n";
     for (const RoleInfo& info : role_table())
@@ -227,6 +230,13 @@ std::string help_markdown()
         for (const Param& param : command.params)
             md += format("| `{}` | {} | {} |\n", param.name,
                          param.type == ParamType::integer ? "integer" : "number", cell(param.help));
+        if (!command.modifiers.empty())
+            md += format("\nModifiers (`--{}:KEY=VALUE`, several joined by `:`):\n\n"
+                         "| modifier | values (default first) | meaning |\n|---|---|---|\n",
+                         command.name);
+        for (const Modifier& modifier : command.modifiers)
+            md += format("| `{}` | {} | {} |\n", modifier.key, OIIO::Strutil::join(modifier.values, ", "),
+                         cell(modifier.help));
         if (!command.roles.empty())
             md += format("\nNeeds the guides: {}.\n", role_names(command.roles));
         if (!command.optional_roles.empty())

@@ -20,6 +20,7 @@ constexpr int max_temporal_radius = 8;
 struct Step {
     const Command* command = nullptr;  ///< nullptr for an output (-o)
     std::vector<std::string> values;   ///< the command's parameters
+    ModifierValues modifiers;          ///< its `:KEY=VALUE` modifiers
     std::string output;                ///< the -o path (may hold a frame pattern)
 };
 

@@ -22,7 +22,7 @@ const std::vector<RoleInfo>& role_table()
           "object id seen in a specular pixel's mirror reflection, negative if none",
           { "reflid", "reflect_id" } },
         { Role::normal, "normal", "normal", 3, 3, false, "first-hit normal",
-          { "N", "Normal", "Denoising Normal" } },
+          { "N", "Denoising Normal", "Normal" } },
         { Role::depth, "depth", "depth", 1, 1, false,
           "first-hit distance (>= 1e9, e.g. Cycles' 1e10, is background)",
           { "Z", "Depth", "Denoising Depth", "zfiltered" } },

@@ -56,7 +56,8 @@ IMAGES = [
 ]
 # image, mcdtool's options, the reference's quality and prefilter
 CASES = ([(image[0], [f"--denoise:quality={q}"], q, True) for image in IMAGES for q in reference.QUALITIES]
-         + [(IMAGES[0][0], ["--denoise:prefilter=0"], "high", False)])
+         + [(IMAGES[0][0], ["--denoise:prefilter=0"], "high", False),
+            (IMAGES[1][0], ["--denoise:quality=fast:prefilter=0"], "fast", False)])
 
 
 class Failed(Exception):

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -147,7 +148,7 @@ void expect_matches_reference(const TensorMap& tensors, int channels, int height
 {
     UNet net;
     std::string error;
-    ASSERT_TRUE(net.load(tensors, "test", error)) << error;
+    ASSERT_TRUE(net.load(std::make_shared<const TensorMap>(tensors), "test", error)) << error;
     const auto input     = random_input(channels, height, width, seed);
     const auto reference = unetref::unet(tensors, input);
     const Agreement a    = agreement(run_engine(net, input), reference);
@@ -246,7 +247,8 @@ TEST(NetworkUNet, RefusesSidesThatAreNotMultiplesOf16)
     std::vector<float> in(9 * 24 * 32), out(3 * 24 * 32);
     EXPECT_FALSE(net.run(in.data(), 24, 32, out.data(), 0, error));
     EXPECT_NE(error.find("no network"), std::string::npos) << error;
-    ASSERT_TRUE(net.load(random_default_unet(9, 1), "test", error)) << error;
+    ASSERT_TRUE(net.load(std::make_shared<const TensorMap>(random_default_unet(9, 1)), "test", error))
+        << error;
     EXPECT_FALSE(net.run(in.data(), 24, 32, out.data(), 0, error));
     EXPECT_NE(error.find("multiples of 16"), std::string::npos) << error;
 }
@@ -255,7 +257,8 @@ TEST(NetworkUNet, PlansAreReusedAndRemadeExactly)
 {
     UNet net;
     std::string error;
-    ASSERT_TRUE(net.load(random_default_unet(6, 3), "test", error)) << error;
+    ASSERT_TRUE(net.load(std::make_shared<const TensorMap>(random_default_unet(6, 3)), "test", error))
+        << error;
     const auto a = random_input(6, 32, 32, 1), b = random_input(6, 48, 64, 2);
     const auto first = run_engine(net, a);
     run_engine(net, b);
@@ -267,7 +270,8 @@ TEST(NetworkUNet, ThreadCountsAgree)
 {
     UNet net;
     std::string error;
-    ASSERT_TRUE(net.load(random_default_unet(9, 4), "test", error)) << error;
+    ASSERT_TRUE(net.load(std::make_shared<const TensorMap>(random_default_unet(9, 4)), "test", error))
+        << error;
     const auto input = random_input(9, 64, 80, 3);
     const auto one = run_engine(net, input, 1), two = run_engine(net, input, 2);
     for (size_t i = 0; i < one.size(); ++i)

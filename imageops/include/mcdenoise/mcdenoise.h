@@ -36,6 +36,7 @@
 #include <mcdenoise/demodulate.h>
 #include <mcdenoise/denoise.h>
 #include <mcdenoise/denoise_layers.h>
+#include <mcdenoise/denoise_network.h>
 #include <mcdenoise/dof.h>
 #include <mcdenoise/features.h>
 #include <mcdenoise/fireflies.h>

@@ -19,18 +19,19 @@ bool UNet::load(const std::string& path, std::string& error)
     TensorMap tensors;
     if (!read_tza(path, tensors, error))
         return false;
-    return load(std::move(tensors), path, error);
+    return load(std::make_shared<const TensorMap>(std::move(tensors)), path, error);
 }
 
-bool UNet::load(TensorMap tensors, const std::string& source, std::string& error)
+bool UNet::load(std::shared_ptr<const TensorMap> tensors, const std::string& source,
+                std::string& error)
 {
     plan_.reset();
     layout_  = UNetLayout();
     tensors_ = std::move(tensors);
     source_  = source;
-    if (read_unet_layout(tensors_, source_, layout_, error))
+    if (read_unet_layout(*tensors_, source_, layout_, error))
         return true;
-    tensors_.clear();
+    tensors_.reset();
     return false;
 }
 

@@ -32,8 +32,10 @@ public:
     /// the file (and the tensor) when it cannot be read, is not a .tza file
     /// or does not hold one of OIDN's UNets.
     bool load(const std::string& path, std::string& error);
-    /// Loads already-read `tensors`; `source` names them in errors.
-    bool load(TensorMap tensors, const std::string& source, std::string& error);
+    /// Loads already-read `tensors` (shared: several networks may run the
+    /// same weights); `source` names them in errors.
+    bool load(std::shared_ptr<const TensorMap> tensors, const std::string& source,
+              std::string& error);
     /// True once a load succeeded.
     bool loaded() const;
 
@@ -60,7 +62,7 @@ private:
     /// The plan of `height` x `width`, made or reused.
     UNetPlan* plan_for(int height, int width, std::string& error);
 
-    TensorMap tensors_;
+    std::shared_ptr<const TensorMap> tensors_;
     UNetLayout layout_;
     std::string source_;
     std::unique_ptr<UNetPlan> plan_;

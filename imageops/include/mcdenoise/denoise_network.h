@@ -1,0 +1,83 @@
+// denoise_network.h: the trained denoiser: Intel Open Image Denoise 2.x's
+// published networks (its weights, Apache-2.0) run by mcdenoise's own
+// inference engine on oneDNN, with OIDN's whole pipeline for HDR renders.
+#pragma once
+
+#include <mcdenoise/export.h>
+#include <mcdenoise/features.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+MCDENOISE_API_BEGIN
+
+/// Which of OIDN's networks run: OIDN's quality levels, the same files it
+/// picks for each.
+enum class NetworkQuality {
+    fast,      ///< the `_small` networks where OIDN has one
+    balanced,  ///< the default-size networks
+    high,      ///< the `_large` networks where OIDN has one (OIDN's default)
+};
+
+/// How `denoise_network` runs, beyond the images.
+struct NetworkOptions {
+    NetworkQuality quality = NetworkQuality::high;
+    /// Denoise the albedo and normal guides first, each by its own network
+    /// (OIDN's `cleanAux`, Blender's "Accurate" prefilter), then the beauty
+    /// with the network trained on clean guides. Off: the guides are taken
+    /// as they are, by the network trained on noisy ones.
+    bool prefilter_guides = true;
+    /// The working memory the networks may take, in bytes: the images are
+    /// cut into overlapping tiles small enough (never below 768 pixels a
+    /// side, as OIDN). 0: OIDN's default, tiles of at most 2160 x 2160
+    /// pixels. Tiled output equals whole-image output within float rounding.
+    uint64_t memory_limit = 0;
+    /// The folder of OIDN 2.x weight files (`rt_*.tza`). Empty: the
+    /// environment's `MCD_WEIGHTS_DIR`, else the weights installed with the
+    /// library, else those of its build tree.
+    std::string weights_dir;
+    /// Called as each phase ends ("read weights", "prefilter albedo",
+    /// "prefilter normal", "autoexposure", "network") with its seconds.
+    std::function<void(const std::string& phase, double seconds)> on_phase;
+    /// Called after each tile of each network with the fraction of all the
+    /// run's tiles done, from 0 to 1.
+    std::function<void(double fraction)> on_progress;
+};
+
+/// Denoise the colour of a Monte Carlo render (channels 0-2, linear HDR)
+/// with OIDN's networks; further channels (alpha) are copied unchanged.
+///
+/// OIDN's RT pipeline, step by step as OIDN 2.4 runs it (docs/network.md):
+/// the exposure is measured over the whole ROI (the key 0.18 over the
+/// geometric mean of 16 x 16-pixel bin luminances); the colour is scaled by
+/// it, sanitised (NaN to 0, clamped to [0, FLT_MAX]) and put through the
+/// PU transfer; the albedo (3 channels; 1 is taken as grey) is clamped to
+/// [0, 1] and the normal (3 channels, any length, any space) to [-1, 1];
+/// with `prefilter_guides`, both are denoised by `rt_alb*` and `rt_nrm*`
+/// first; the image is padded to multiples of 16 and, beyond the memory
+/// limit, tiled with an overlap of the receptive field; the output is
+/// decoded and scaled back. Weights by guides present: albedo and normal
+/// `rt_hdr_calb_cnrm` (prefiltered) or `rt_hdr_alb_nrm`; albedo alone
+/// `rt_hdr_alb`; none `rt_hdr`. A normal without an albedo is not read
+/// (OIDN has no network for it). Other guides are not read.
+///
+/// The `dst` attribute `mcdenoise:denoise_guides` lists the guides read,
+/// `mcdenoise:network` the weight files run.
+///
+/// @param beauty   The noisy render: at least 3 channels, colour first.
+/// @param guides   `albedo` and `normal`, if present, covering the ROI.
+/// @param options  Quality, prefiltering, memory, weights, callbacks.
+/// @param roi      Must include channels 0-2.
+ImageBuf denoise_network(const ImageBuf& beauty, const Guides& guides = {},
+                         const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized).
+bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides = {},
+                     const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
+
+/// The name of `quality` ("fast", "balanced", "high").
+const char* network_quality_name(NetworkQuality quality);
+/// Parses a quality name into `quality`; false for any other text.
+bool parse_network_quality(const std::string& name, NetworkQuality& quality);
+
+MCDENOISE_API_END

@@ -1,0 +1,34 @@
+// tiled_run.h: one network over a whole image, tile by tile as OIDN does
+// (tiling.h's plan, tile_io.h's tensors), within a memory budget;
+// implemented in tiled_run.cpp.
+#pragma once
+
+#include "network/tile_io.h"
+#include "network/unet.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace mcdenoise {
+
+/// OIDN's largest tile when no memory limit is set: 2160 x 2160 pixels.
+constexpr long long default_max_tile_pixels = 2160LL * 2160LL;
+
+/// The most pixels a tile of `net` may have for its run to take at most
+/// `budget_bytes`: the network's activations, scratchpad and weights, and
+/// the tile's input and output tensors. At least 1 (the plan then takes
+/// its smallest tiles). 0 with `error` set when oneDNN cannot plan.
+long long max_tile_pixels(UNet& net, uint64_t budget_bytes, std::string& error);
+
+/// Runs `net` over `images` into `output` (of the same size; it must not
+/// share memory with an input), tile by tile with at most
+/// `max_tile_pixels` a tile, `input` saying how the tensors are encoded.
+/// `progress` (may be empty) is called after each tile with the tiles done
+/// and their count. False with `error` set when a tile cannot be written
+/// or the network fails.
+bool run_tiled(UNet& net, const NetworkImages& images, const NetworkInput& input,
+               long long max_tile_pixels, const RgbOut& output, int nthreads,
+               const std::function<void(int done, int total)>& progress, std::string& error);
+
+}  // namespace mcdenoise
