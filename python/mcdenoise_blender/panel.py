@@ -3,6 +3,7 @@ output, with the output format and the compiled module's state."""
 import bpy
 
 from . import locate, preferences, settings
+from .options import DENOISE_MODES
 
 
 class RENDER_PT_mcdenoise(bpy.types.Panel):
@@ -22,7 +23,7 @@ class RENDER_PT_mcdenoise(bpy.types.Panel):
         column = layout.column()
         column.active = options.enabled
         column.prop(options, "mode")
-        if options.mode == "DENOISE":
+        if options.mode in DENOISE_MODES:
             column.prop(options, "light_passes")
         column.prop(options, "output")
         if options.output == "PATTERN":

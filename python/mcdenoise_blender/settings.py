@@ -53,7 +53,7 @@ def prepare_scene(scene):
         if settings.mode == "REPORT_CHAIN" and not layer.use_pass_object_index:
             layer.use_pass_object_index = True
             reports.report("INFO", f"turned on the Object Index pass of view layer '{layer.name}'")
-        if settings.mode == "DENOISE" and settings.light_passes:
+        if settings.mode in options.DENOISE_MODES and settings.light_passes:
             _turn_on_light_passes(layer)
     if scene.render.engine != "CYCLES":
         reports.report("WARNING", f"the render engine is {scene.render.engine}: the Denoising Data guide "
@@ -79,9 +79,10 @@ class McdenoiseSettings(options.DenoiseOptions, bpy.types.PropertyGroup):
     mode: options.mode_property(update=_on_change)  # the passes it needs change with it
     light_passes: bpy.props.BoolProperty(
         name="Denoise light passes", default=False, update=_on_change,
-        description="With Denoise: also denoise the Diffuse, Glossy, Transmission, Volume, Emission and "
+        description="With a Denoise mode: also denoise the Diffuse, Glossy, Transmission, Volume, Emission and "
                     "Environment light passes with the beauty (mcdtool --aovs auto), so the compositor's "
-                    "rebuild of them is the denoised beauty; turns those passes on")
+                    "rebuild of them is the denoised beauty (on the non-local means operator for now: the network has no "
+                    "light-pass mode yet); turns those passes on")
 
 
 def register():

@@ -7,6 +7,7 @@
 
 #include "denoise_binding.h"
 #include "denoise_layers.h"
+#include "denoise_network_binding.h"
 #include "operation.h"
 
 #include <mcdenoise/mcdenoise.h>
@@ -58,6 +59,7 @@ void bind_operations(py::module_& m)
                   arg("factor") = mcd::default_firefly_factor, arg("radius") = mcd::default_firefly_radius);
     bind_denoise(m);         // one frame, or with its neighbours (denoise_binding.cpp)
     bind_denoise_layers(m);  // with light passes: an overload of denoise, and denoise_layers
+    bind_denoise_network(m);  // the trained denoiser (denoise_network_binding.cpp)
     def_operation(m, "demodulate", mcd::demodulate, arg("beauty"), arg("albedo"),
                   arg("epsilon") = mcd::default_demodulate_epsilon);
     def_operation(m, "remodulate", mcd::remodulate, arg("filtered"), arg("albedo"),
