@@ -1,7 +1,7 @@
 // denoise_network.cpp: the trained denoiser (mcdenoise/denoise_network.h):
-// the guides checked, the pixels read as float RGB, the exposure measured,
-// the guides prefiltered, the beauty's network run tile by tile, and only
-// then `dst` written.
+// the guides checked, the pixels read as float RGB and every weight file
+// loaded before `dst` is touched; then the guides prefiltered, the exposure
+// measured and the beauty's network run tile by tile straight into `dst`.
 #include <mcdenoise/denoise_network.h>
 
 #include "core/guides.h"
@@ -9,11 +9,14 @@
 #include "network/autoexposure.h"
 #include "network/network_files.h"
 #include "network/tiled_run.h"
+#include "network/tiling.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <chrono>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace mcdenoise {
@@ -99,30 +102,42 @@ struct NetworkRun {
     int width, height;
     FloatRgb colour, albedo, normal;
     NetworkFiles files;
-    std::string weights_dir;
+    UNet beauty_net, albedo_net, normal_net;
     int tiles_done = 0, tiles_total = 0;
 
-    /// Loads the weights file `name` into `net`.
-    bool load(const std::string& name, UNet& net, std::string& error) const
+    /// The bytes held for the whole run besides the networks' tiles: the
+    /// pixels copied in and the prefiltered guides.
+    uint64_t held_bytes() const
     {
-        const std::string path = weights_dir + "/" + name;
-        const auto tensors     = shared_weights(path, error);
-        return tensors && net.load(tensors, path, error);
+        const uint64_t image = uint64_t(width) * uint64_t(height) * 3 * sizeof(float);
+        uint64_t held        = (colour.storage.size() + albedo.storage.size() + normal.storage.size())
+                        * sizeof(float);
+        for (const std::string* name : { &files.albedo_prefilter, &files.normal_prefilter })
+            held += name->empty() ? 0 : image;
+        return held;
     }
 
-    /// The tile budget of `net`.
-    long long tile_pixels(UNet& net, std::string& error) const
+    /// The most pixels a tile of `net` may have, and its smallest side.
+    bool tile_limits(UNet& net, long long& pixels, int& min_side, std::string& error) const
     {
-        return options.memory_limit ? max_tile_pixels(net, options.memory_limit, error)
-                                    : default_max_tile_pixels;
+        if (!options.memory_limit) {
+            pixels   = default_max_tile_pixels;
+            min_side = 0;
+            return true;
+        }
+        const uint64_t held = held_bytes();
+        pixels   = max_tile_pixels(net, options.memory_limit > held ? options.memory_limit - held : 1, error);
+        min_side = memory_limited_min_side(net);
+        return pixels > 0;
     }
 
     /// Runs `net` on `images` into `output`, reporting progress.
     bool run(UNet& net, const NetworkImages& images, const NetworkInput& input, const RgbOut& output,
              std::string& error)
     {
-        const long long tile = tile_pixels(net, error);
-        if (tile == 0)
+        long long pixels = 0;
+        int min_side     = 0;
+        if (!tile_limits(net, pixels, min_side, error))
             return false;
         const int before = tiles_done;
         auto progress    = [&](int done, int) {
@@ -130,23 +145,17 @@ struct NetworkRun {
             if (options.on_progress)
                 options.on_progress(double(tiles_done) / double(std::max(tiles_total, tiles_done)));
         };
-        return run_tiled(net, images, input, tile, output, nthreads, progress, error);
-    }
-
-    /// Denoises a guide by its prefilter network `name`, encoded as
-    /// `encoding`, into `clean`.
-    bool prefilter(const std::string& name, Encoding encoding, const RgbIn& guide, OwnedRgb& clean,
-                   std::string& error)
-    {
-        UNet net;
-        if (!load(name, net, error))
-            return false;
-        clean.values.resize(size_t(width) * height * 3);
-        NetworkInput input;
-        input.encoding = encoding;
-        return run(net, { guide, {}, {} }, input, clean.out(width, height), error);
+        return run_tiled(net, images, input, pixels, min_side, output, nthreads, progress, error);
     }
 };
+
+/// Loads the weights file `name` of `dir` into `net`.
+bool load_network(const std::string& dir, const std::string& name, UNet& net, std::string& error)
+{
+    const std::string path = dir + "/" + name;
+    const auto tensors     = shared_weights(path, error);
+    return tensors && net.load(tensors, path, error);
+}
 
 bool check_inputs(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, const ROI& roi)
 {
@@ -163,54 +172,65 @@ bool check_inputs(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, c
     return !guides.normal || check_guide(op_name, "normal", dst, *guides.normal, 3, roi);
 }
 
-/// The number of tiles `files` run over the image, for the progress.
-int count_tiles(NetworkRun& run, std::string& error)
+/// Chooses and loads the networks and counts their tiles: everything that
+/// can fail on bad input (a missing or corrupt weight file) before `dst`
+/// is touched.
+bool load_networks(NetworkRun& run, const Guides& guides, std::string& error)
 {
-    int total = 0;
-    for (const std::string* name : { &run.files.albedo_prefilter, &run.files.normal_prefilter,
-                                     &run.files.beauty }) {
-        if (name->empty())
-            continue;
-        UNet net;
-        TilePlan plan;
-        if (!run.load(*name, net, error))
-            return -1;
-        const long long tile = run.tile_pixels(net, error);
-        if (tile == 0
-            || !plan_tiles(run.width, run.height, net.layout().tile_overlap(), tile, plan, error))
-            return -1;
-        total += int(plan.tiles.size());
-    }
-    return total;
-}
-
-/// Runs the networks; `result` gets the denoised colour.
-bool run_networks(NetworkRun& run, const Guides& guides, OwnedRgb& result, std::string& error)
-{
-    PhaseClock clock(run.options);
     const bool albedo = guides.albedo != nullptr, normal = guides.normal != nullptr && albedo;
     run.files = choose_network_files(run.options.quality, albedo, normal, run.options.prefilter_guides);
-    if (!find_weights_dir(run.options.weights_dir, run.weights_dir, error))
+    std::string dir;
+    if (!find_weights_dir(run.options.weights_dir, dir, error))
         return false;
-    run.tiles_total = count_tiles(run, error);
-    if (run.tiles_total < 0)
-        return false;
-    clock.end("read weights");
+    const std::pair<const std::string*, UNet*> nets[] = { { &run.files.albedo_prefilter, &run.albedo_net },
+                                                          { &run.files.normal_prefilter, &run.normal_net },
+                                                          { &run.files.beauty, &run.beauty_net } };
+    run.tiles_total = 0;
+    for (const auto& [name, net] : nets) {
+        if (name->empty())
+            continue;
+        long long pixels = 0;
+        int min_side     = 0;
+        TilePlan plan;
+        if (!load_network(dir, *name, *net, error) || !run.tile_limits(*net, pixels, min_side, error)
+            || !plan_tiles(run.width, run.height, net->layout().tile_overlap(), pixels, plan, error,
+                           min_side))
+            return false;
+        run.tiles_total += int(plan.tiles.size());
+    }
+    return true;
+}
+
+/// Runs the networks: the guides' prefilters, the exposure, the beauty's
+/// network into `output`.
+bool run_networks(NetworkRun& run, const Guides& guides, const RgbOut& output, PhaseClock& clock,
+                  std::string& error)
+{
+    const bool albedo = guides.albedo != nullptr, normal = guides.normal != nullptr && albedo;
     OwnedRgb clean_albedo, clean_normal;
     NetworkImages images { run.colour.pixels, albedo ? run.albedo.pixels : RgbIn {},
                            normal ? run.normal.pixels : RgbIn {} };
-    if (!run.files.albedo_prefilter.empty()) {
-        if (!run.prefilter(run.files.albedo_prefilter, Encoding::ldr, images.albedo, clean_albedo, error))
+    const struct {
+        const std::string& file;
+        UNet& net;
+        Encoding encoding;
+        RgbIn& guide;
+        OwnedRgb& clean;
+        const char* phase;
+    } prefilters[] = { { run.files.albedo_prefilter, run.albedo_net, Encoding::ldr, images.albedo,
+                         clean_albedo, "prefilter albedo" },
+                       { run.files.normal_prefilter, run.normal_net, Encoding::normal, images.normal,
+                         clean_normal, "prefilter normal" } };
+    for (const auto& p : prefilters) {
+        if (p.file.empty())
+            continue;
+        p.clean.values.resize(size_t(run.width) * run.height * 3);
+        NetworkInput input;
+        input.encoding = p.encoding;
+        if (!run.run(p.net, { p.guide, {}, {} }, input, p.clean.out(run.width, run.height), error))
             return false;
-        images.albedo = clean_albedo.in(run.width, run.height);
-        clock.end("prefilter albedo");
-    }
-    if (!run.files.normal_prefilter.empty()) {
-        if (!run.prefilter(run.files.normal_prefilter, Encoding::normal, images.normal, clean_normal,
-                           error))
-            return false;
-        images.normal = clean_normal.in(run.width, run.height);
-        clock.end("prefilter normal");
+        p.guide = p.clean.in(run.width, run.height);
+        clock.end(p.phase);
     }
     NetworkInput input;
     input.encoding = Encoding::hdr;
@@ -218,39 +238,34 @@ bool run_networks(NetworkRun& run, const Guides& guides, OwnedRgb& result, std::
     input.normal   = normal;
     autoexposure(images.main, input.input_scale);
     clock.end("autoexposure");
-    UNet net;
-    if (!run.load(run.files.beauty, net, error))
-        return false;
-    result.values.resize(size_t(run.width) * run.height * 3);
-    if (!run.run(net, images, input, result.out(run.width, run.height), error))
+    if (!run.run(run.beauty_net, images, input, output, error))
         return false;
     clock.end("network");
     return true;
 }
 
-/// Writes the denoised colour and the beauty's other channels into `dst`.
-bool write_result(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides, const ROI& roi,
-                  const OwnedRgb& colour)
+/// The RGB part of `result`, where the beauty's network writes.
+RgbOut result_rgb(const ResultPixels& result, const ROI& roi)
 {
-    ResultPixels result;
-    if (!begin_result(op_name, dst, beauty, { &beauty, guides.albedo, guides.normal }, roi, result))
-        return false;
+    float* first            = result.pixel(roi.xbegin, roi.ybegin);
+    const std::ptrdiff_t row = roi.height() > 1 ? result.pixel(roi.xbegin, roi.ybegin + 1) - first
+                                                : result.pixel_stride() * roi.width();
+    return { first, roi.width(), roi.height(), result.pixel_stride(), row };
+}
+
+/// Copies the beauty's channels past the colour (alpha) into `result`.
+void copy_further_channels(const ImageBuf& beauty, const ROI& roi, ResultPixels& result)
+{
     const int extra = roi.chend - 3;
-    std::vector<float> row(size_t(roi.width()) * size_t(std::max(extra, 0)));
+    if (extra <= 0)
+        return;
+    std::vector<float> row(size_t(roi.width()) * size_t(extra));
     for (int y = roi.ybegin; y < roi.yend; ++y) {
-        if (extra > 0) {
-            const ROI line(roi.xbegin, roi.xend, y, y + 1, roi.zbegin, roi.zend, 3, roi.chend);
-            beauty.get_pixels(line, OIIO::TypeFloat, row.data());
-        }
-        const float* rgb = colour.values.data() + size_t(y - roi.ybegin) * roi.width() * 3;
-        for (int x = roi.xbegin; x < roi.xend; ++x) {
-            float* out      = result.pixel(x, y);
-            const size_t px = size_t(x - roi.xbegin);
-            std::copy_n(rgb + 3 * px, 3, out);
-            std::copy_n(row.data() + px * size_t(std::max(extra, 0)), std::max(extra, 0), out + 3);
-        }
+        const ROI line(roi.xbegin, roi.xend, y, y + 1, roi.zbegin, roi.zend, 3, roi.chend);
+        beauty.get_pixels(line, OIIO::TypeFloat, row.data());
+        for (int x = roi.xbegin; x < roi.xend; ++x)
+            std::copy_n(row.data() + size_t(x - roi.xbegin) * size_t(extra), extra, result.pixel(x, y) + 3);
     }
-    return finish_result(op_name, dst, result);
 }
 
 std::string guide_names(const Guides& guides)
@@ -288,24 +303,33 @@ bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_inputs(dst, beauty, guides, roi))
         return false;
     NetworkRun run(options, nthreads, roi.width(), roi.height());
-    OwnedRgb colour;
+    PhaseClock clock(options);
     std::string error;
+    ResultPixels result;
     try {
         if (!read_rgb(beauty, roi, run.colour) || (guides.albedo && !read_rgb(*guides.albedo, roi, run.albedo))
             || (guides.normal && !read_rgb(*guides.normal, roi, run.normal))) {
             dst.errorfmt("{}: cannot read the input pixels", op_name);
             return false;
         }
-        if (!run_networks(run, guides, colour, error)) {
+        if (!load_networks(run, guides, error)) {
+            dst.errorfmt("{}: {}", op_name, error);
+            return false;
+        }
+        clock.end("read weights");
+        if (!begin_result(op_name, dst, beauty, { &beauty, guides.albedo, guides.normal }, roi, result))
+            return false;
+        if (!run_networks(run, guides, result_rgb(result, roi), clock, error)) {
             dst.errorfmt("{}: {}", op_name, error);
             return false;
         }
     } catch (const std::bad_alloc&) {
-        dst.errorfmt("{}: out of memory ({}x{} pixels); set a memory limit to tile the image", op_name,
+        dst.errorfmt("{}: out of memory ({}x{} pixels); a memory limit tiles the image", op_name,
                      run.width, run.height);
         return false;
     }
-    if (!write_result(dst, beauty, guides, roi, colour))
+    copy_further_channels(beauty, roi, result);
+    if (!finish_result(op_name, dst, result))
         return false;
     dst.specmod().attribute("mcdenoise:denoise_guides", guide_names(guides));
     std::string networks = run.files.beauty;

@@ -25,13 +25,15 @@ long long max_tile_pixels(UNet& net, uint64_t budget_bytes, std::string& error)
     return std::max(1LL, static_cast<long long>(std::min(pixels, 1e15)));
 }
 
+int memory_limited_min_side(const UNet& net) { return 4 * net.layout().tile_overlap(); }
+
 bool run_tiled(UNet& net, const NetworkImages& images, const NetworkInput& input,
-               long long max_tile_pixels, const RgbOut& output, int nthreads,
+               long long max_tile_pixels, int min_side, const RgbOut& output, int nthreads,
                const std::function<void(int done, int total)>& progress, std::string& error)
 {
     TilePlan plan;
     if (!plan_tiles(output.width, output.height, net.layout().tile_overlap(), max_tile_pixels, plan,
-                    error))
+                    error, min_side))
         return false;
     const int channels  = net.layout().input_channels;
     const size_t pixels = size_t(plan.tile_width) * size_t(plan.tile_height);

@@ -66,7 +66,7 @@ int padded_size(int size) { return int(padded(size)); }
 int min_tile_side(int overlap) { return int(padded(std::max(4LL * overlap, 1LL * tile_min_side))); }
 
 bool plan_tiles(int width, int height, int overlap, long long max_tile_pixels, TilePlan& plan,
-                std::string& error)
+                std::string& error, int min_side)
 {
     if (width < 1 || width > max_side || height < 1 || height > max_side) {
         error = "image size " + std::to_string(width) + "x" + std::to_string(height)
@@ -83,7 +83,9 @@ bool plan_tiles(int width, int height, int overlap, long long max_tile_pixels, T
             "maximum tile size " + std::to_string(max_tile_pixels) + " pixels (must be positive)";
         return false;
     }
-    const long long min_tile = min_tile_side(overlap);
+    const long long min_tile = min_side > 0
+                                   ? std::max(padded(min_side), 2LL * overlap + tile_alignment)
+                                   : min_tile_side(overlap);
     Side w { width, padded(width), 1, min_tile };
     Side h { height, padded(height), 1, min_tile };
     while (h.tile * w.tile > max_tile_pixels) {

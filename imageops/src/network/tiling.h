@@ -77,7 +77,11 @@ int min_tile_side(int overlap);
 /// `error` saying why and `plan` unchanged, unless width and height are 1
 /// to 2^30, overlap is a non-negative multiple of 16 below 2^24 and
 /// max_tile_pixels is positive.
+/// `min_side`, when positive, replaces `min_tile_side(overlap)` (rounded
+/// up to `tile_alignment`, at least 2 * overlap + `tile_alignment`): a
+/// memory limit may need tiles smaller than OIDN's, at the cost of more
+/// overlap computed.
 bool plan_tiles(int width, int height, int overlap, long long max_tile_pixels, TilePlan& plan,
-                std::string& error);
+                std::string& error, int min_side = 0);
 
 }  // namespace mcdenoise
