@@ -15,6 +15,34 @@ namespace {
 
 using dnnl::memory;
 
+/// Allocates on 64-byte boundaries (a cache line, one AVX-512 vector):
+/// oneDNN's kernels take the buffers they are given as aligned, and some
+/// (the nearest resampling on large images, with its non-temporal stores)
+/// fault on a buffer that is not. std::vector's default allocator gives 16.
+template<class T>
+struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::align_val_t alignment { 64 };
+
+    CacheLineAllocator() = default;
+    template<class U>
+    CacheLineAllocator(const CacheLineAllocator<U>&)
+    {
+    }
+    T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+    void deallocate(T* p, size_t) { ::operator delete(p, alignment); }
+    template<class U>
+    bool operator==(const CacheLineAllocator<U>&) const
+    {
+        return true;
+    }
+    template<class U>
+    bool operator!=(const CacheLineAllocator<U>&) const
+    {
+        return false;
+    }
+};
+
 int round_up(int value, int multiple) { return (value + multiple - 1) / multiple * multiple; }
 
 /// A range of whole channel blocks of one level's tensor in the arena:
@@ -85,9 +113,10 @@ struct UNetPlan::Impl {
     Chunk input_chunk, output_chunk;
     size_t arena_floats = 0, scratchpad_bytes = 0, weight_bytes = 0;
 
-    // Set by allocate().
-    std::vector<float> arena;
-    std::vector<uint8_t> scratchpad;
+    // Set by allocate(); every chunk's offset is a whole number of channel
+    // blocks of pixels, so every chunk is as aligned as the arena.
+    std::vector<float, CacheLineAllocator<float>> arena;
+    std::vector<uint8_t, CacheLineAllocator<uint8_t>> scratchpad;
     std::vector<dnnl::primitive> primitives;
     std::vector<std::unordered_map<int, memory>> arguments;
     std::vector<memory> weights;
