@@ -117,7 +117,9 @@ const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
 bool network_denoise(const Call& c)
 {
     mcdenoise::NetworkOptions options;
-    mcdenoise::parse_network_quality(c.modifier("quality"), options.quality);
+    for (const mcdenoise::NetworkQualityName& q : mcdenoise::network_quality_names)
+        if (c.modifier("quality") == q.name)
+            options.quality = q.quality;
     options.prefilter_guides = c.modifier("prefilter") == "1";
     options.memory_limit     = c.memory_limit;
     if (c.verbose)

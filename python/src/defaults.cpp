@@ -47,6 +47,7 @@ void bind_defaults(py::module_& m)
     used["nlmeans"] = guide_names(mcd::nlmeans_guides);
     used["clamp_fireflies"] = guide_names(mcd::clamp_fireflies_guides);
     used["denoise"] = guide_names(mcd::denoise_guides);
+    used["denoise_network"] = guide_names(mcd::denoise_network_guides);
     m.attr("guides_used") = used;
 }
 

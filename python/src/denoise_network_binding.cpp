@@ -35,7 +35,13 @@ void bind_denoise_network(py::module_& m)
         [](const ImageArg& beauty, const GuidesArg& guides, const std::string& quality, bool prefilter_guides,
            uint64_t memory_limit, const std::string& weights_dir, ROI roi, int nthreads) -> py::object {
             mcd::NetworkOptions options;
-            if (!mcd::parse_network_quality(quality, options.quality))
+            bool known = false;
+            for (const mcd::NetworkQualityName& q : mcd::network_quality_names)
+                if (quality == q.name) {
+                    options.quality = q.quality;
+                    known           = true;
+                }
+            if (!known)
                 throw py::value_error("denoise_network: quality must be \"high\", \"balanced\" or \"fast\", not \""
                                       + quality + "\"");
             options.prefilter_guides = prefilter_guides;

@@ -262,7 +262,8 @@ def test_cycles_multilayer_discovery(cycles_exr, tmp_path):
     assert r.code == 0, r
     assert "beauty   <- " in r.out and "My Layer.Combined.R,My Layer.Combined.G,My Layer.Combined.B" in r.out
     assert "id       <- " in r.out and ": My Layer.IndexOB.X" in r.out
-    assert "normal   <- " in r.out and ": My Layer.Normal.X,My Layer.Normal.Y,My Layer.Normal.Z" in r.out
+    assert ("normal   <- " in r.out
+            and ": My Layer.Denoising Normal.X,My Layer.Denoising Normal.Y,My Layer.Denoising Normal.Z" in r.out)
     assert "depth    <- " in r.out and ": My Layer.Depth.Z" in r.out
     assert "albedo   <- " in r.out and "My Layer.Denoising Albedo.R" in r.out
     src, src_spec = read_image(cycles_exr)

@@ -75,9 +75,19 @@ ImageBuf denoise_network(const ImageBuf& beauty, const Guides& guides = {},
 bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides = {},
                      const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
 
-/// The name of `quality` ("fast", "balanced", "high").
-const char* network_quality_name(NetworkQuality quality);
-/// Parses a quality name into `quality`; false for any other text.
-bool parse_network_quality(const std::string& name, NetworkQuality& quality);
+/// Each quality and its name ("fast", "balanced", "high"): the one table
+/// of quality names that mcdtool's modifier and Python's `quality` read.
+struct NetworkQualityName {
+    NetworkQuality quality;
+    const char* name;
+};
+inline constexpr NetworkQualityName network_quality_names[] = {
+    { NetworkQuality::fast, "fast" },
+    { NetworkQuality::balanced, "balanced" },
+    { NetworkQuality::high, "high" },
+};
+
+/// The guides `denoise_network` reads.
+constexpr GuideMask denoise_network_guides = guide_bit("normal") | guide_bit("albedo");
 
 MCDENOISE_API_END

@@ -277,26 +277,6 @@ std::string guide_names(const Guides& guides)
 
 }  // namespace
 
-const char* network_quality_name(NetworkQuality quality)
-{
-    switch (quality) {
-    case NetworkQuality::fast: return "fast";
-    case NetworkQuality::balanced: return "balanced";
-    case NetworkQuality::high: return "high";
-    }
-    return "high";
-}
-
-bool parse_network_quality(const std::string& name, NetworkQuality& quality)
-{
-    for (NetworkQuality q : { NetworkQuality::fast, NetworkQuality::balanced, NetworkQuality::high })
-        if (name == network_quality_name(q)) {
-            quality = q;
-            return true;
-        }
-    return false;
-}
-
 bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides,
                      const NetworkOptions& options, ROI roi, int nthreads)
 {
