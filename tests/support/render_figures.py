@@ -17,6 +17,9 @@ import OpenImageIO as oiio
 
 import mcdenoise
 
+# The NL-means operator: what --aovs and --temporal run until the network
+# has those modes, so the per-frame baseline their figures are taken against.
+NLM = "--denoise:method=nlm"
 # The luminance of libmcdenoise's metrics and energy figures (features.h).
 LUMA = np.array([0.2126, 0.7152, 0.0722], dtype=np.float32)
 # The passes `--aovs auto` denoises (oiiotool-ext/light_passes.cpp), and
@@ -148,13 +151,15 @@ class Mcdtool:
 
 
 def still_figures(tool, folder, scene, spp):
-    """raw, --denoise and the report's chain (--object-median 7 --gaussian
+    """raw, the NL-means operator ("denoise"), the network ("network", the
+    default --denoise) and the report's chain (--object-median 7 --gaussian
     3): relMSE, frame mean and highlight energy against the reference."""
     source = os.path.join(folder, f"{scene}_{spp}.exr")
     ref = Image(os.path.join(folder, f"{scene}_ref.exr")).beauty()
     results = {
         "raw": Image(source).beauty(),
-        "denoise": tool.result(f"{scene}_{spp}_denoise", source, "--denoise").beauty(),
+        "denoise": tool.result(f"{scene}_{spp}_nlm", source, NLM).beauty(),
+        "network": tool.result(f"{scene}_{spp}_network", source, "--denoise").beauty(),
         "chain": tool.result(f"{scene}_{spp}_chain", source, "--object-median", "7",
                              "--gaussian", "3").beauty(),
     }
@@ -185,15 +190,15 @@ def rebuilt_where_raw_rebuilds(raw, out, names=None):
 
 def aov_figures(tool, folder, scene, spp):
     """`--aovs auto --denoise` on a render with light passes: each written
-    pass's relMSE raw and denoised; the beauty of --denoise alone and of
-    --aovs; how exactly the written passes rebuild the written beauty
+    pass's relMSE raw and denoised; the beauty of the NL-means operator
+    alone (which --aovs runs) and of --aovs; how exactly the written passes rebuild the written beauty
     where the raw ones rebuild the raw beauty (the Cycles-style rebuild,
     and the light groups' sum when there are groups); alpha raw and
     written."""
     source = os.path.join(folder, f"{scene}_{spp}.exr")
     raw, ref = Image(source), Image(os.path.join(folder, f"{scene}_ref.exr"))
     out = tool.result(f"{scene}_{spp}_aovs", source, "--aovs", "auto", "--denoise")
-    alone = tool.result(f"{scene}_{spp}_denoise", source, "--denoise")
+    alone = tool.result(f"{scene}_{spp}_nlm", source, NLM)
     passes = {}
     for name in raw.light_passes():
         truth = ref.light_pass(name)
@@ -221,7 +226,8 @@ def shot_sequence_figures(results, references):
 
 
 def shot_figures(tool, folder, shot, baseline_binary=None):
-    """The shot's raw frames, per-frame --denoise, --temporal N and (with
+    """The shot's raw frames, per-frame NL-means (which --temporal runs
+    across frames), --temporal N and (with
     the warped_baseline binary) the naive baseline, over its evaluated
     frames: relMSE, temporal error, flicker and worst frame."""
     cfg = SHOTS[shot]
@@ -229,7 +235,7 @@ def shot_figures(tool, folder, shot, baseline_binary=None):
     refs = [Image(os.path.join(folder, f"{shot}_ref_f{0 if cfg['static'] else f}.exr")).beauty()
             for f in cfg["evaluated"]]
     first, last = cfg["frames"][0], cfg["frames"][-1]
-    per_frame = {f: tool.result(f"{shot}_f{f}_denoise", frame_path(f), "--denoise")
+    per_frame = {f: tool.result(f"{shot}_f{f}_nlm", frame_path(f), NLM)
                  for f in cfg["frames"]}
     pattern = os.path.join(tool.work, f"{shot}_temporal_f@.exr")
     temporal_path = lambda f: pattern.replace("@", str(f))  # noqa: E731
