@@ -125,6 +125,17 @@ struct WindowFrames {
     std::vector<WindowFrame> neighbours;
 };
 
+/// What --memory-limit leaves for a command's working memory (the
+/// network's tiles) once the frame's own buffers are counted: 0 (no bound)
+/// without a limit, at least 1 byte with one.
+uint64_t network_budget(uint64_t memory_limit_mb, uint64_t frame_bytes)
+{
+    if (memory_limit_mb == 0)
+        return 0;
+    const uint64_t limit = memory_limit_mb << 20;
+    return limit > frame_bytes ? limit - frame_bytes : 1;
+}
+
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
 /// errors forwarded; with `verbose`, its time is printed. `memory_limit`
 /// (bytes, 0 for none) bounds the network's working memory. With `window`,
@@ -238,7 +249,8 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         if (step.command) {
             const bool across_frames = options.temporal > 0 && frame && first_command;
             current = run_command(step, current, guides, layers, options.threads, options.verbose,
-                                  options.memory_limit_mb << 20, stats, across_frames ? &loaded.window : nullptr);
+                                  network_budget(options.memory_limit_mb, inputs.frame_bytes), stats,
+                                  across_frames ? &loaded.window : nullptr);
             first_command = false;
             continue;
         }

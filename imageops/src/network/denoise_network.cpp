@@ -145,7 +145,9 @@ struct NetworkRun {
             if (options.on_progress)
                 options.on_progress(double(tiles_done) / double(std::max(tiles_total, tiles_done)));
         };
-        return run_tiled(net, images, input, pixels, min_side, output, nthreads, progress, error);
+        const bool ok = run_tiled(net, images, input, pixels, min_side, output, nthreads, progress, error);
+        net.release_plan();  // the next network's tiles get the memory
+        return ok;
     }
 };
 

@@ -53,6 +53,8 @@ UNetPlan* UNet::plan_for(int height, int width, std::string& error)
     return plan_.get();
 }
 
+void UNet::release_plan() { plan_.reset(); }
+
 size_t UNet::working_bytes(int height, int width, std::string& error)
 {
     if (!loaded()) {

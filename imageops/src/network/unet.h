@@ -58,6 +58,10 @@ public:
     bool run(const float* input, int height, int width, float* output, int nthreads,
              std::string& error);
 
+    /// Frees the plan of the last size run (its activations, scratchpad
+    /// and reordered weights); the next run makes it again.
+    void release_plan();
+
 private:
     /// The plan of `height` x `width`, made or reused.
     UNetPlan* plan_for(int height, int width, std::string& error);
