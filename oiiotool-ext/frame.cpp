@@ -6,6 +6,7 @@
 #include "compare.h"
 #include "error.h"
 #include "frame_inputs.h"
+#include "memory_limit.h"
 #include "frames.h"
 #include "guides.h"
 #include "input.h"
@@ -126,14 +127,15 @@ struct WindowFrames {
 };
 
 /// What --memory-limit leaves for a command's working memory (the
-/// network's tiles) once the frame's own buffers are counted: 0 (no bound)
-/// without a limit, at least 1 byte with one.
-uint64_t network_budget(uint64_t memory_limit_mb, uint64_t frame_bytes)
+/// network's tiles) beyond what the process already holds (the frame's
+/// images, read and extracted): 0 (no bound) without a limit, at least 1
+/// byte with one.
+uint64_t network_budget(uint64_t memory_limit_mb)
 {
     if (memory_limit_mb == 0)
         return 0;
-    const uint64_t limit = memory_limit_mb << 20;
-    return limit > frame_bytes ? limit - frame_bytes : 1;
+    const uint64_t limit = memory_limit_mb << 20, held = resident_bytes();
+    return limit > held ? limit - held : 1;
 }
 
 /// Runs one command on `nthreads` threads: exactly one library call, timed,
@@ -249,7 +251,7 @@ FrameOutcome run_frame(const Options& options, std::optional<int> frame, RunStat
         if (step.command) {
             const bool across_frames = options.temporal > 0 && frame && first_command;
             current = run_command(step, current, guides, layers, options.threads, options.verbose,
-                                  network_budget(options.memory_limit_mb, inputs.frame_bytes), stats,
+                                  network_budget(options.memory_limit_mb), stats,
                                   across_frames ? &loaded.window : nullptr);
             first_command = false;
             continue;

@@ -53,8 +53,7 @@ std::unique_ptr<FrameInputs> read_frame_inputs(const FrameReading& reading, std:
     inputs->found = discover_channels(input.spec(), reading.beauty_channels, inputs->path);
     inputs->guides =
         load_guides(input, inputs->path, inputs->found, reading.aovs, reading.roles, path_of, *inputs->files);
-    inputs->frame_bytes = frame_bytes(input, inputs->found, inputs->guides, reading.temporal > 0 && frame);
-    require_memory(inputs->frame_bytes, memory_limit,
+    require_memory(frame_bytes(input, inputs->found, inputs->guides, reading.temporal > 0 && frame), memory_limit,
                    inputs->path,
                    reading.temporal > 0 && frame
                        ? "this frame (input, output copy, 3 beauty buffers, the guides and the frame prepared for "

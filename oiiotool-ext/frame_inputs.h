@@ -29,7 +29,6 @@ struct FrameInputs {
     Discovery found;
     GuideImages guides;
     ImageBuf beauty;                     ///< the beauty channels as float
-    uint64_t frame_bytes = 0;            ///< what --memory-limit counts of the frame's buffers
 };
 
 /// What reading a frame's inputs takes of the command line.

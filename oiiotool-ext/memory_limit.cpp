@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/strutil.h>
 
+#include <cstdio>
 #include <limits>
 #include <unistd.h>
 
@@ -50,6 +51,18 @@ void require_memory(uint64_t bytes, uint64_t limit, const std::string& context, 
                            : format("{} MiB", (bytes + bytes_per_mebibyte - 1) / bytes_per_mebibyte);
     throw RunError(format("{} : {} needs {}, more than the memory limit of {} MiB (--memory-limit)", context,
                           what, need, limit / bytes_per_mebibyte));
+}
+
+uint64_t resident_bytes()
+{
+    std::FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (!statm)
+        return 0;
+    unsigned long long total = 0, resident = 0;
+    const bool read = std::fscanf(statm, "%llu %llu", &total, &resident) == 2;
+    std::fclose(statm);
+    const long page = sysconf(_SC_PAGESIZE);
+    return read && page > 0 ? uint64_t(resident) * uint64_t(page) : 0;
 }
 
 }  // namespace mcdtool

@@ -18,6 +18,10 @@ uint64_t float_bytes(uint64_t pixels, uint64_t channels);
 /// memory when `limit_mb` is 0.
 uint64_t memory_limit_bytes(uint64_t limit_mb);
 
+/// The process's resident memory now, in bytes (Linux /proc/self/statm;
+/// 0 where it cannot be read).
+uint64_t resident_bytes();
+
 /// Throws RunError "<context> : <what> needs N MiB, more than the memory
 /// limit of L MiB (--memory-limit)" if `bytes` exceeds `limit`.
 void require_memory(uint64_t bytes, uint64_t limit, const std::string& context, const std::string& what);

@@ -100,18 +100,21 @@ struct NetworkRun {
     const NetworkOptions& options;
     int nthreads;
     int width, height;
+    int result_channels = 3;
     FloatRgb colour, albedo, normal;
     NetworkFiles files;
     UNet beauty_net, albedo_net, normal_net;
     int tiles_done = 0, tiles_total = 0;
 
     /// The bytes held for the whole run besides the networks' tiles: the
-    /// pixels copied in and the prefiltered guides.
+    /// pixels copied in, the prefiltered guides and the result's
+    /// `result_channels` channels.
     uint64_t held_bytes() const
     {
         const uint64_t image = uint64_t(width) * uint64_t(height) * 3 * sizeof(float);
         uint64_t held        = (colour.storage.size() + albedo.storage.size() + normal.storage.size())
-                        * sizeof(float);
+                        * sizeof(float)
+                    + image / 3 * uint64_t(result_channels);
         for (const std::string* name : { &files.albedo_prefilter, &files.normal_prefilter })
             held += name->empty() ? 0 : image;
         return held;
@@ -285,6 +288,7 @@ bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides
     if (!resolve_roi(op_name, dst, beauty, roi) || !check_inputs(dst, beauty, guides, roi))
         return false;
     NetworkRun run(options, nthreads, roi.width(), roi.height());
+    run.result_channels = roi.chend - roi.chbegin;
     PhaseClock clock(options);
     std::string error;
     ResultPixels result;

@@ -9,35 +9,44 @@
 #include <utility>
 #include <vector>
 
+#include <sys/mman.h>
+
 namespace mcdenoise {
 
 namespace {
 
 using dnnl::memory;
 
-/// Allocates on 64-byte boundaries (a cache line, one AVX-512 vector):
-/// oneDNN's kernels take the buffers they are given as aligned, and some
-/// (the nearest resampling on large images, with its non-temporal stores)
-/// fault on a buffer that is not. std::vector's default allocator gives 16.
+/// Allocates straight from the kernel (an anonymous mmap): page-aligned,
+/// which oneDNN needs (its kernels take their buffers as 64-byte aligned,
+/// and the nearest resampling on large images faults on a buffer that is
+/// not), and given back to the kernel when the plan goes, whatever the
+/// process's malloc settings: mcdtool keeps freed heap memory for its next
+/// frame, which left one network's arena of gigabytes beside the next's.
 template<class T>
-struct CacheLineAllocator {
+struct MappedAllocator {
     using value_type = T;
-    static constexpr std::align_val_t alignment { 64 };
 
-    CacheLineAllocator() = default;
+    MappedAllocator() = default;
     template<class U>
-    CacheLineAllocator(const CacheLineAllocator<U>&)
+    MappedAllocator(const MappedAllocator<U>&)
     {
     }
-    T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
-    void deallocate(T* p, size_t) { ::operator delete(p, alignment); }
+    T* allocate(size_t n)
+    {
+        void* p = mmap(nullptr, n * sizeof(T), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED)
+            throw std::bad_alloc();
+        return static_cast<T*>(p);
+    }
+    void deallocate(T* p, size_t n) { munmap(p, n * sizeof(T)); }
     template<class U>
-    bool operator==(const CacheLineAllocator<U>&) const
+    bool operator==(const MappedAllocator<U>&) const
     {
         return true;
     }
     template<class U>
-    bool operator!=(const CacheLineAllocator<U>&) const
+    bool operator!=(const MappedAllocator<U>&) const
     {
         return false;
     }
@@ -115,8 +124,8 @@ struct UNetPlan::Impl {
 
     // Set by allocate(); every chunk's offset is a whole number of channel
     // blocks of pixels, so every chunk is as aligned as the arena.
-    std::vector<float, CacheLineAllocator<float>> arena;
-    std::vector<uint8_t, CacheLineAllocator<uint8_t>> scratchpad;
+    std::vector<float, MappedAllocator<float>> arena;
+    std::vector<uint8_t, MappedAllocator<uint8_t>> scratchpad;
     std::vector<dnnl::primitive> primitives;
     std::vector<std::unordered_map<int, memory>> arguments;
     std::vector<memory> weights;
@@ -402,7 +411,8 @@ bool UNetPlan::allocate(std::string& error)
                 + std::to_string(impl_->height) + " pixels ("
                 + std::to_string(working_bytes() >> 20) + " MB)";
     }
-    impl_->arena.clear();
+    impl_->arena      = {};
+    impl_->scratchpad = {};
     impl_->primitives.clear();
     impl_->arguments.clear();
     return false;
