@@ -122,6 +122,7 @@ bool network_denoise(const Call& c)
             options.quality = q.quality;
     options.prefilter_guides = c.modifier("prefilter") == "1";
     options.memory_limit     = c.memory_limit;
+    options.on_progress      = c.progress;
     if (c.verbose)
         options.on_phase = [](const std::string& phase, double seconds) {
             std::printf("mcdtool: --denoise   %s  %.3f s\n", phase.c_str(), seconds);

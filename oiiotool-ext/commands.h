@@ -10,6 +10,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
@@ -109,6 +110,9 @@ struct Call {
     std::string modifier(const char* key) const;
     /// The command's row (for its modifiers' defaults).
     const Command* command = nullptr;
+    /// Called with the fraction of the call done, for the progress line
+    /// (empty: nowhere).
+    std::function<void(double)> progress;
 };
 
 /// A library call with the driver's calling convention.

@@ -160,7 +160,8 @@ ImageBuf run_command(const Step& step, const ImageBuf& current, const GuideImage
                &step.modifiers,
                memory_limit,
                verbose,
-               &command };
+               &command,
+               [&stats](double fraction) { stats.command_progress(fraction); } };
     stats.begin_command(step.values.empty() ? name : name + " " + OIIO::Strutil::join(step.values, " "));
     Timer timer;
     bool ok = command.call(call);

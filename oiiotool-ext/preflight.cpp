@@ -90,7 +90,7 @@ void check_parameters(const std::vector<Step>& steps)
         ImageBuf beauty = one_pixel(beauty_channels);
         ImageBuf dst;
         Call call{ dst, beauty, guides, step.values, 1, nullptr, nullptr, nullptr, &step.modifiers, 0, false,
-                   &command };
+                   &command, {} };
         if (!command.call(call) || dst.has_error())
             throw UsageError(format("{} : {}", dashed(command.name), one_line(dst.geterror())));
     }

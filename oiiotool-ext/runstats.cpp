@@ -50,6 +50,12 @@ void RunStats::begin_command(const std::string& command)
         progress_->begin_command(command);
 }
 
+void RunStats::command_progress(double fraction)
+{
+    if (progress_)
+        progress_->set_detail(format("{:.0f} % done", 100.0 * fraction));
+}
+
 void RunStats::add_frame(FrameOutcome outcome) { ++counts_[int(outcome)]; }
 
 std::string RunStats::frame_summary() const
@@ -125,7 +131,14 @@ void Progress::begin_command(const std::string& command)
         drawn_ = false;
     }
     command_ = command;
+    detail_.clear();
     command_timer_ = Timer();
+}
+
+void Progress::set_detail(const std::string& detail)
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    detail_ = detail;
 }
 
 void Progress::tick()
@@ -133,7 +146,8 @@ void Progress::tick()
     std::unique_lock<std::mutex> lock(mutex_);
     while (!wake_.wait_for(lock, tick_interval, [this] { return stop_; }))
         if (!command_.empty() && command_timer_.seconds() > slow_seconds)
-            draw(format("{}{}  {:.0f} s", frame_label_, command_, command_timer_.seconds()));
+            draw(format("{}{}  {:.0f} s{}", frame_label_, command_, command_timer_.seconds(),
+                        detail_.empty() ? "" : "  " + detail_));
 }
 
 void Progress::draw(const std::string& text)

@@ -55,6 +55,8 @@ public:
     void show_progress_in(Progress* progress) { progress_ = progress; }
     /// Tells the progress line that `command` (as typed) starts.
     void begin_command(const std::string& command);
+    /// Tells the progress line the fraction of the running command done.
+    void command_progress(double fraction);
     /// The report, one "key value" per line, for stderr.
     std::string report() const;
 
@@ -97,6 +99,9 @@ public:
     /// `command` (as typed, with its values) starts; "" when one ends,
     /// which clears its line.
     void begin_command(const std::string& command);
+    /// What the running command says of its progress ("40 % of tiles"),
+    /// shown after it.
+    void set_detail(const std::string& detail);
     /// Shows that `done` frames are finished; the last is `frame`.
     void update(size_t done, int frame);
     /// Ends the line so that later messages start on a fresh one.
@@ -119,6 +124,7 @@ private:
     bool stop_ = false;
     std::string frame_label_;    ///< "frame 3/48  " or "" for one image
     std::string command_;        ///< the running command, "" between commands
+    std::string detail_;         ///< its progress, "" when it says none
     Timer command_timer_;
     std::thread ticker_;
 };

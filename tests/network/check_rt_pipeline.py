@@ -187,7 +187,10 @@ def check(command, weights_dir, tmp):
             start = time.monotonic()
             ref = reference.denoise(weights_dir, quality, prefilter, beauty, albedo, normal)
             seconds_ref = time.monotonic() - start
-            ours, seconds_ours = run_mcdtool(command, path, options, os.path.join(tmp, "out.exr"))
+            # A file name of its own per case: OpenImageIO's image cache
+            # would serve a reused name's earlier pixels.
+            out = os.path.join(tmp, f"out_{passed + failed}.exr")
+            ours, seconds_ours = run_mcdtool(command, path, options, out)
             relative, largest = compare(ours, ref)
         except (Failed, reference.Failure) as e:
             print(f"FAIL {case}: {e}")
