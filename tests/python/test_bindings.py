@@ -120,10 +120,12 @@ def test_guide_vocabulary_is_the_guides_struct():
     struct = re.search(r"struct Guides \{(.*?)\n\};", (HEADERS / "features.h").read_text(), re.S).group(1)
     fields = tuple(re.findall(r"const ImageBuf\* (\w+)\s*=", struct))
     assert fields == mcdenoise.guide_fields
-    assert set(mcdenoise.guides_used) == {"cross_bilateral", "atrous", "nlmeans", "clamp_fireflies", "denoise"}
+    assert set(mcdenoise.guides_used) == {"cross_bilateral", "atrous", "nlmeans", "clamp_fireflies", "denoise",
+                                          "denoise_network"}
     for function, used in mcdenoise.guides_used.items():
         assert used and set(used) <= set(fields), function
     assert mcdenoise.guides_used["clamp_fireflies"] == ("object_id",)
+    assert mcdenoise.guides_used["denoise_network"] == ("normal", "albedo")
 
 
 def test_argument_names_and_defaults_are_the_librarys():
