@@ -112,9 +112,9 @@ const mcdenoise::PreparedFrame& prepared(const WindowFrame& frame, int nthreads)
     return *frame.prepared;
 }
 
-/// --denoise on the network (denoise_network.h): the quality and the
-/// prefilter as the modifiers say; with -v each phase's time.
-bool network_denoise(const Call& c)
+/// The network's options as the modifiers of `c` say; with -v each
+/// phase's time.
+mcdenoise::NetworkOptions network_options(const Call& c)
 {
     mcdenoise::NetworkOptions options;
     for (const mcdenoise::NetworkQualityName& q : mcdenoise::network_quality_names)
@@ -127,10 +127,52 @@ bool network_denoise(const Call& c)
         options.on_phase = [](const std::string& phase, double seconds) {
             std::printf("mcdtool: --denoise   %s  %.3f s\n", phase.c_str(), seconds);
         };
+    return options;
+}
+
+/// The network result of `frame` and its preparation, made now unless its
+/// window holds them (the preparation shared with the NL-means' cross-frame
+/// form).
+const mcdenoise::NetworkFrame& network_frame(const WindowFrame& frame, const Call& c)
+{
+    mcdenoise::NetworkFrame& n = *frame.network;
+    if (n.denoised || !n.error.empty())
+        return n;
+    n.prepared = prepared(frame, c.nthreads);
+    if (!n.prepared.data) {
+        n.error = n.prepared.error;
+        return n;
+    }
+    mcdenoise::Guides guides;
+    guides.albedo = present(*frame.guides, Role::albedo);
+    guides.normal = present(*frame.guides, Role::normal);
+    auto denoised = std::make_shared<ImageBuf>();
+    if (mcdenoise::denoise_network(*denoised, *frame.beauty, guides, network_options(c), {}, c.nthreads))
+        n.denoised = std::move(denoised);
+    else
+        n.error = denoised->geterror();
+    return n;
+}
+
+/// --denoise on the network (denoise_network.h): of the frame alone, or,
+/// with --temporal, each frame's result (made once in its window)
+/// accumulated across the frames that show the same thing.
+bool network_denoise(const Call& c)
+{
+    if (c.neighbours && !c.neighbours->empty()) {
+        std::vector<mcdenoise::NetworkFrame> neighbours;
+        std::vector<int> offsets;
+        for (const WindowFrame& n : *c.neighbours) {
+            neighbours.push_back(network_frame(n, c));
+            offsets.push_back(n.offset);
+        }
+        return mcdenoise::denoise_network(c.dst, network_frame(*c.centre, c), neighbours, offsets, {},
+                                          c.nthreads);
+    }
     mcdenoise::Guides guides;
     guides.albedo = c.optional_guide(Role::albedo);
     guides.normal = c.optional_guide(Role::normal);
-    return mcdenoise::denoise_network(c.dst, c.beauty, guides, options, {}, c.nthreads);
+    return mcdenoise::denoise_network(c.dst, c.beauty, guides, network_options(c), {}, c.nthreads);
 }
 
 /// The one-line note that --denoise runs the NL-means operator where the
@@ -147,18 +189,18 @@ void note_network_fallback(const char* what)
                  what);
 }
 
-/// --denoise: the network unless `method=nlm`, or light passes or frames
-/// ask for the NL-means operator; then the cross-frame form when the call
-/// has neighbours, of the frames as their window prepared them (with no
+/// --denoise: the network (of the frame alone or across frames) unless
+/// `method=nlm`, or light passes ask for the NL-means operator; then the
+/// cross-frame form when the call has neighbours, of the frames as their window prepared them (with no
 /// neighbour on disk the single-frame form, which that equals bit for
 /// bit).
 bool denoise_call(const Call& c)
 {
     const bool layered = c.layers && !c.layers->images.empty();
     if (c.modifier("method") == "network") {
-        if (!layered && !c.neighbours)
+        if (!layered)
             return network_denoise(c);
-        note_network_fallback(layered ? "--aovs" : "--temporal");
+        note_network_fallback("--aovs");
     }
     if (layered)
         return denoise_layers(c);

@@ -19,6 +19,7 @@
 
 namespace mcdenoise {
 struct PreparedFrame;
+struct NetworkFrame;
 struct Guides;
 }
 
@@ -71,6 +72,8 @@ struct WindowFrame {
     const ImageBuf* beauty;
     const GuideImages* guides;
     mcdenoise::PreparedFrame* prepared;
+    /// Its network result (and preparation), made once likewise.
+    mcdenoise::NetworkFrame* network;
 };
 
 struct Command;

@@ -60,7 +60,8 @@ FrameWindow::Held& FrameWindow::get(int frame)
     auto found = held_.find(frame);
     if (found == held_.end())
         found = held_.emplace(frame, Held{ read_frame_inputs(reading_, frame, stats_),
-                                           std::make_unique<mcdenoise::PreparedFrame>() })
+                                           std::make_unique<mcdenoise::PreparedFrame>(),
+                                           std::make_unique<mcdenoise::NetworkFrame>() })
                     .first;
     return found->second;
 }
@@ -75,7 +76,7 @@ const FrameInputs& FrameWindow::centre(int frame)
 WindowFrame FrameWindow::centre_frame(int frame)
 {
     Held& held = get(frame);
-    return WindowFrame{ 0, &held.inputs->beauty, &held.inputs->guides, held.prepared.get() };
+    return WindowFrame{ 0, &held.inputs->beauty, &held.inputs->guides, held.prepared.get(), held.network.get() };
 }
 
 std::vector<WindowFrame> FrameWindow::neighbours(int frame)
@@ -101,7 +102,7 @@ std::vector<WindowFrame> FrameWindow::neighbours(int frame)
         }();
         const FrameInputs& inputs = *held.inputs;
         require_compatible(centre_inputs, inputs, frame, other);
-        found.push_back(WindowFrame{ offset, &inputs.beauty, &inputs.guides, held.prepared.get() });
+        found.push_back(WindowFrame{ offset, &inputs.beauty, &inputs.guides, held.prepared.get(), held.network.get() });
     }
     return found;
 }

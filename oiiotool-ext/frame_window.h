@@ -9,6 +9,7 @@
 #include "frame_inputs.h"
 #include "runstats.h"
 
+#include <mcdenoise/denoise_network.h>
 #include <mcdenoise/temporal.h>
 
 #include <map>
@@ -40,11 +41,12 @@ public:
     std::vector<WindowFrame> neighbours(int frame);
 
 private:
-    /// A frame held: its inputs and, once --denoise has made it, its
-    /// preparation for the cross-frame denoise.
+    /// A frame held: its inputs and, once --denoise has made them, its
+    /// preparation for the cross-frame denoise and its network result.
     struct Held {
         std::unique_ptr<FrameInputs> inputs;
         std::unique_ptr<mcdenoise::PreparedFrame> prepared;
+        std::unique_ptr<mcdenoise::NetworkFrame> network;
     };
 
     /// `frame`, read now unless held.

@@ -225,23 +225,24 @@ def shot_sequence_figures(results, references):
                 worst=max(c.frame_rel_mse))
 
 
-def shot_figures(tool, folder, shot, baseline_binary=None):
-    """The shot's raw frames, per-frame NL-means (which --temporal runs
-    across frames), --temporal N and (with
+def shot_figures(tool, folder, shot, baseline_binary=None, denoise=NLM):
+    """The shot's raw frames, per-frame `denoise` (NLM: the NL-means
+    operator; "--denoise": the network), `denoise --temporal N` and (with
     the warped_baseline binary) the naive baseline, over its evaluated
     frames: relMSE, temporal error, flicker and worst frame."""
     cfg = SHOTS[shot]
+    tag = "nlm" if denoise == NLM else "network"
     frame_path = lambda f: os.path.join(folder, f"{shot}_16_f{f}.exr")  # noqa: E731
     refs = [Image(os.path.join(folder, f"{shot}_ref_f{0 if cfg['static'] else f}.exr")).beauty()
             for f in cfg["evaluated"]]
     first, last = cfg["frames"][0], cfg["frames"][-1]
-    per_frame = {f: tool.result(f"{shot}_f{f}_nlm", frame_path(f), NLM)
+    per_frame = {f: tool.result(f"{shot}_f{f}_{tag}", frame_path(f), denoise)
                  for f in cfg["frames"]}
-    pattern = os.path.join(tool.work, f"{shot}_temporal_f@.exr")
+    pattern = os.path.join(tool.work, f"{shot}_temporal_{tag}_f@.exr")
     temporal_path = lambda f: pattern.replace("@", str(f))  # noqa: E731
     if not all(tool.fresh(temporal_path(f), frame_path(f)) for f in cfg["evaluated"]):
         frames = f"{cfg['evaluated'][0]}-{cfg['evaluated'][-1]}"
-        tool.run(os.path.join(folder, f"{shot}_16_f@.exr"), "--frames", frames, "--denoise",
+        tool.run(os.path.join(folder, f"{shot}_16_f@.exr"), "--frames", frames, denoise,
                  "--temporal", str(cfg["n"]), "-o", pattern)
     methods = {
         "raw": [Image(frame_path(f)).beauty() for f in cfg["evaluated"]],

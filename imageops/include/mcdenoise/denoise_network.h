@@ -5,10 +5,13 @@
 
 #include <mcdenoise/export.h>
 #include <mcdenoise/features.h>
+#include <mcdenoise/temporal.h>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 MCDENOISE_API_BEGIN
 
@@ -73,6 +76,74 @@ ImageBuf denoise_network(const ImageBuf& beauty, const Guides& guides = {},
                          const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
 /// Write to an existing image `dst` (allocating if it is uninitialized).
 bool denoise_network(ImageBuf& dst, const ImageBuf& beauty, const Guides& guides = {},
+                     const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
+
+/// One frame of a shot ready for the network's cross-frame denoise: the
+/// frame prepared as for the cross-frame `denoise` (temporal.h) and its
+/// network result alone. A sequence makes each frame's once and passes it
+/// to every window it is in, as the centre and as a neighbour. Copies
+/// share the planes and the result, which never change.
+struct NetworkFrame {
+    PreparedFrame prepared;
+    /// `denoise_network` of the frame over its data window; null unless
+    /// made successfully.
+    std::shared_ptr<const ImageBuf> denoised;
+    /// Why making it failed; empty if it succeeded or was not attempted.
+    std::string error;
+};
+
+/// Make `frame`'s `NetworkFrame`: `prepare_frame`, then `denoise_network`
+/// of its beauty with its albedo and normal over its data window, as
+/// `options` say. On failure the result has no `denoised` and an `error`.
+NetworkFrame prepare_network_frame(const FrameInput& frame, const NetworkOptions& options = {},
+                                   int nthreads = 0);
+
+/// Denoise one frame of a shot with the network, so the shot does not
+/// flicker: each frame's network result (`NetworkFrame::denoised`)
+/// averaged across the frames that show the same thing.
+///
+/// 1. Each frame alone: prepared as for the cross-frame `denoise` (its
+///    noise, features and motion) and denoised by the network
+///    (`prepare_network_frame`).
+/// 2. Each neighbour is carried into the centre's pixel grid by the motion
+///    guides and matched with the centre as the cross-frame `denoise`
+///    matches it (steps 2 to 4 there), on the noisy renders: the shot's
+///    own noise, then the temporal guide's weight of the neighbour at each
+///    pixel (its 3x3 patch against the centre's, normalised by that noise,
+///    and its features).
+/// 3. A neighbour's weight is 1 where it is in place (not moved by the
+///    motion) and agrees with the centre (its features match, its 7x7 mean
+///    within the noise of the centre's, and its 3x3 patch within about
+///    three standard deviations of the noise distance); elsewhere the
+///    temporal guide's weight; 0 where its motion, carried to the centre's
+///    pixel, differs from the centre's by more than half a pixel plus a
+///    tenth of the centre's (a pixel the motion uncovers or covers).
+/// 4. At each pixel the centre's network result averaged with each
+///    neighbour's result carried there (Keys' cubic, kept within the 2x2
+///    pixels around the point), the centre weighing 1, a neighbour its
+///    weight. Where nothing matches (a disocclusion, a moving object or
+///    shadow) it is the centre's own result.
+///
+/// With no neighbours the result is the centre's network result over the
+/// ROI, bit for bit. Every frame must have the centre's data window,
+/// channel count and guides (the cross-frame `denoise`'s checks and
+/// messages); an unprepared frame, or one whose preparation failed, is an
+/// error naming it. The attribute `mcdenoise:denoise_frames` is the count
+/// of frames used.
+ImageBuf denoise_network(const NetworkFrame& centre, const std::vector<NetworkFrame>& neighbours,
+                         const std::vector<int>& offsets, ROI roi = {}, int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized).
+bool denoise_network(ImageBuf& dst, const NetworkFrame& centre,
+                     const std::vector<NetworkFrame>& neighbours, const std::vector<int>& offsets,
+                     ROI roi = {}, int nthreads = 0);
+/// The same, of frames not yet prepared (each is made once with
+/// `prepare_network_frame`).
+ImageBuf denoise_network(const FrameInput& centre, const std::vector<FrameInput>& neighbours,
+                         const std::vector<int>& offsets, const NetworkOptions& options = {},
+                         ROI roi = {}, int nthreads = 0);
+/// Write to an existing image `dst` (allocating if it is uninitialized).
+bool denoise_network(ImageBuf& dst, const FrameInput& centre,
+                     const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets,
                      const NetworkOptions& options = {}, ROI roi = {}, int nthreads = 0);
 
 /// Each quality and its name ("fast", "balanced", "high"): the one table

@@ -154,6 +154,20 @@ void agreement_row(const std::vector<NlmFrame>& frames,
 
 }  // namespace
 
+std::vector<Plane<float>> shot_agreement(const std::vector<NlmFrame>& frames,
+                                         const std::vector<const Plane<float>*>& faithful,
+                                         const ROI& region, const ROI& dw, int nthreads)
+{
+    std::vector<Plane<float>> out(frames.size() - 1, Plane<float>(region));
+    parallel_rows(region, nthreads, [&](int y) {
+        std::vector<std::vector<float>> agrees(frames.size() - 1);
+        agreement_row(frames, faithful, region, dw, y, agrees);
+        for (size_t k = 0; k < agrees.size(); ++k)
+            std::copy(agrees[k].begin(), agrees[k].end(), out[k].row(y));
+    });
+    return out;
+}
+
 std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
                                          const std::vector<const Plane<float>*>& faithful,
                                          const ROI& region, const ROI& dw, int nthreads)

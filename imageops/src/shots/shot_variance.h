@@ -39,4 +39,14 @@ std::vector<VarianceField> shot_variance(const std::vector<NlmFrame>& frames,
                                          const OIIO::ROI& region, const OIIO::ROI& dw,
                                          int nthreads);
 
+/// Whether each neighbour (`frames[k]`, k >= 1) agrees with the centre at
+/// each pixel of `region` as `shot_variance` decides it (1 or 0): carried
+/// faithfully, its features matching and its box mean within the noise of
+/// the centre's. The inputs as for `shot_variance`; one plane per
+/// neighbour over `region`.
+std::vector<Plane<float>> shot_agreement(const std::vector<NlmFrame>& frames,
+                                         const std::vector<const Plane<float>*>& faithful,
+                                         const OIIO::ROI& region, const OIIO::ROI& dw,
+                                         int nthreads);
+
 }  // namespace mcdenoise

@@ -11,13 +11,9 @@
 #include "denoise/energy_outliers.h"
 #include "features/feature_field.h"
 #include "features/nlmeans_frames.h"
-#include "shots/frame_warp.h"
-#include "shots/shot_variance.h"
-#include "shots/temporal_frame.h"
-#include "shots/temporal_guide.h"
+#include "shots/temporal_match.h"
 
 #include <algorithm>
-#include <numeric>
 #include <string>
 
 namespace mcdenoise {
@@ -31,88 +27,6 @@ constexpr const char* op_name = temporal_op;
 
 // Rows of the ROI averaged at a time (`average_frames`).
 constexpr int band_rows = 128;
-
-// The regions of the centre frame (data window `dw`) the average reads to
-// filter `roi`, as `nlmeans` reads them: the colour (the patches grown by
-// one, and by the box `shot_variance` compares frames over), the variance
-// (the patches) and the features and values (the search windows).
-CarryRegions regions(const ROI& roi, const ROI& dw)
-{
-    const ROI patches = grow_and_clip(roi, denoise_search_radius + denoise_patch_radius, dw);
-    return { grow_and_clip(patches, 1 + agreement_radius, dw), patches,
-             grow_and_clip(roi, denoise_search_radius, dw) };
-}
-
-// Which guides a frame has that `denoise` reads, as flags in the order of
-// `Guides`.
-std::string guide_set(const Guides& g)
-{
-    std::string s;
-    for (const ImageBuf* p : { g.normal, g.depth, g.albedo, g.variance, g.half_a, g.half_b })
-        s += p ? '1' : '0';
-    return s;
-}
-
-bool same_window(const ROI& a, const ROI& b)
-{
-    return a.xbegin == b.xbegin && a.xend == b.xend && a.ybegin == b.ybegin && a.yend == b.yend
-           && a.zbegin == b.zbegin && a.zend == b.zend;
-}
-
-bool check_neighbours(ImageBuf& dst, const FrameInput& centre,
-                      const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets)
-{
-    if (neighbours.size() != offsets.size()) {
-        dst.errorfmt("{}: {} neighbour frames but {} offsets", op_name, neighbours.size(),
-                     offsets.size());
-        return false;
-    }
-    for (size_t i = 0; i < neighbours.size(); ++i) {
-        const std::string what = "neighbour frame at offset " + std::to_string(offsets[i]);
-        if (offsets[i] == 0
-            || std::count(offsets.begin(), offsets.end(), offsets[i]) > 1) {
-            dst.errorfmt("{}: {}: offsets must be non-zero and distinct", op_name, what);
-            return false;
-        }
-        const FrameInput& n = neighbours[i];
-        if (!check_frame(dst, n, what, n.beauty ? n.beauty->roi() : ROI()))
-            return false;
-        if (!same_window(n.beauty->roi(), centre.beauty->roi())
-            || n.beauty->nchannels() != centre.beauty->nchannels()) {
-            dst.errorfmt("{}: {}: data window or channel count differs from the centre frame's",
-                         op_name, what);
-            return false;
-        }
-        if (guide_set(n.guides) != guide_set(centre.guides)) {
-            dst.errorfmt("{}: {}: has not the centre frame's set of guides", op_name, what);
-            return false;
-        }
-    }
-    return true;
-}
-
-// Carry every neighbour into the centre's regions `r`, in the order of
-// their offsets, so the sums do not depend on the order they are listed
-// in.
-void carry_neighbours(const PreparedFrameData& centre,
-                      const std::vector<const PreparedFrameData*>& neighbours,
-                      const std::vector<int>& offsets, const CarryRegions& r, int nthreads,
-                      std::vector<CarriedFrame>& carried)
-{
-    std::vector<const GuideChannels*> motions;
-    for (const PreparedFrameData* f : neighbours)
-        motions.push_back(f->has_motion() ? &f->motion : nullptr);
-    motions.insert(motions.begin(), centre.has_motion() ? &centre.motion : nullptr);
-    std::vector<size_t> order(neighbours.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
-    for (size_t i : order)
-        carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->given_excess,
-                                      neighbours[i]->input.beauty->roi(),
-                                      motion_steps(motions, offsets, offsets[i]), offsets[i], r,
-                                      nthreads));
-}
 
 // The values the sums read of every frame: all masked when any is (the
 // sums need them alike), the centre's (over `window`) through a masked copy
@@ -170,34 +84,15 @@ void shot_excess(const Planes<float>& centre, const std::vector<CarriedFrame>& c
 void average_band(const PreparedFrameData& centre, std::vector<CarriedFrame>& carried,
                   const ROI& band, int nthreads, ResultPixels& result, ImageBuf& excess)
 {
-    const FeatureInputs& c = centre.planes;
-    const ROI dw           = centre.frame.clamped.roi();
     SumSource centre_copy;
-    const SumSource& values = align_masks(c.values, regions(band, dw).window, carried,
-                                          centre_copy);
-    const int radius = centre.has_motion() ? temporal_search_radius
-                                           : temporal_still_search_radius;
-    std::vector<NlmFrame> frames { { &c.colour, &c.variance, &c.features, &c.features, &values,
-                                     nullptr, denoise_search_radius, true } };
-    for (const CarriedFrame& n : carried)
-        frames.push_back({ &n.colour, &n.variance, &n.features, &c.features, &n.values,
-                           &n.usable, radius, false });
-    std::vector<const Plane<float>*> faithful;
-    for (const CarriedFrame& n : carried)
-        faithful.push_back(&n.faithful);
-    const std::vector<VarianceField> variances
-        = shot_variance(frames, faithful, regions(band, dw).variance, dw, nthreads);
-    for (size_t k = 0; k < variances.size(); ++k)
-        frames[k].variance = &variances[k];
-    // The patches and features every candidate is compared with: the
-    // centre's, averaged over the frames that match them.
-    const float strength      = centre.frame.strength;
-    const TemporalGuide guide = temporal_guide(frames, grow_and_clip(band, denoise_patch_radius, dw),
-                                               dw, denoise_patch_radius, strength, nthreads);
-    for (NlmFrame& f : frames)
-        f.centre_features = &guide.features;
-    nlmeans_frames(frames, guide.colour, guide.variance, dw, denoise_patch_radius, strength,
-                   nthreads, result);
+    const SumSource& values = align_masks(centre.planes.values,
+                                          temporal_regions(band, centre.frame.clamped.roi()).window,
+                                          carried, centre_copy);
+    BandMatch match;
+    match_band(centre, carried, values, band, nthreads, match);
+    const TemporalGuide& guide = match.guide;
+    nlmeans_frames(match.frames, guide.colour, guide.variance, centre.frame.clamped.roi(),
+                   denoise_patch_radius, centre.frame.strength, nthreads, result);
     shot_excess(centre.given_excess, carried, guide, band, nthreads, excess);
 }
 
@@ -221,7 +116,7 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
         band.ybegin = y;
         band.yend   = std::min(roi.yend, y + band_rows);
         carried.clear();
-        carry_neighbours(centre, neighbours, offsets, regions(band, clamped.roi()), nthreads,
+        carry_neighbours(centre, neighbours, offsets, temporal_regions(band, clamped.roi()), nthreads,
                          carried);
         ResultPixels part;
         if (!begin_result(op_name, dst, clamped, inputs, band, part))
@@ -234,36 +129,15 @@ bool average_frames(ImageBuf& dst, const PreparedFrameData& centre,
     return finish_result(op_name, dst, total);
 }
 
-// A prepared frame's data, or an error naming it (`what`).
-const PreparedFrameData* prepared_data(ImageBuf& dst, const PreparedFrame& f,
-                                       const std::string& what)
-{
-    if (!f.error.empty())
-        dst.errorfmt("{}: {}: {}", op_name, what, f.error);
-    else if (!f.data)
-        dst.errorfmt("{}: {}: not prepared", op_name, what);
-    return f.data.get();
-}
-
 }  // namespace
 
 bool denoise(ImageBuf& dst, const PreparedFrame& centre,
              const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
              ROI roi, int nthreads)
 {
-    const PreparedFrameData* c = prepared_data(dst, centre, "centre frame");
+    const PreparedFrameData* c = nullptr;
     std::vector<const PreparedFrameData*> ns;
-    std::vector<FrameInput> inputs;
-    for (size_t i = 0; c && i < neighbours.size(); ++i) {
-        const std::string what = i < offsets.size()
-                                     ? "neighbour frame at offset " + std::to_string(offsets[i])
-                                     : "neighbour frame " + std::to_string(i);
-        ns.push_back(prepared_data(dst, neighbours[i], what));
-        if (!ns.back())
-            return false;
-        inputs.push_back(ns.back()->input);
-    }
-    if (!c || !check_neighbours(dst, c->input, inputs, offsets))
+    if (!shot_data(dst, centre, neighbours, offsets, c, ns))
         return false;
     const ImageBuf& beauty = *c->input.beauty;
     if (ns.empty())

@@ -8,6 +8,7 @@
 #include "features/feature_field.h"
 
 #include <string>
+#include <vector>
 
 namespace mcdenoise {
 
@@ -36,5 +37,20 @@ constexpr const char* temporal_op = "denoise";
 /// guide of 4 channels. On failure sets `dst`'s error.
 bool check_frame(OIIO::ImageBuf& dst, const FrameInput& frame, const std::string& what,
                  const OIIO::ROI& roi);
+
+/// Check the neighbours of `centre` (the frames at `offsets`) as the
+/// cross-frame denoise reads them: one offset each, non-zero and distinct;
+/// each frame as `check_frame` checks it, with the centre's data window,
+/// channel count and set of the guides `denoise` reads. On failure sets
+/// `dst`'s error.
+bool check_neighbours(OIIO::ImageBuf& dst, const FrameInput& centre,
+                      const std::vector<FrameInput>& neighbours, const std::vector<int>& offsets);
+
+/// The data of the prepared `centre` and `neighbours` (into `c` and `ns`),
+/// checked with `check_neighbours`; an unprepared frame or one that failed
+/// to prepare is an error naming it, set on `dst`.
+bool shot_data(OIIO::ImageBuf& dst, const PreparedFrame& centre,
+               const std::vector<PreparedFrame>& neighbours, const std::vector<int>& offsets,
+               const PreparedFrameData*& c, std::vector<const PreparedFrameData*>& ns);
 
 }  // namespace mcdenoise
