@@ -176,7 +176,7 @@ bool network_denoise(const Call& c)
 }
 
 /// The one-line note that --denoise runs the NL-means operator where the
-/// network has no mode yet (light passes, frames), printed once a run.
+/// network has no mode yet (light passes), printed once a run.
 void note_network_fallback(const char* what)
 {
     static bool noted = false;
@@ -191,9 +191,9 @@ void note_network_fallback(const char* what)
 
 /// --denoise: the network (of the frame alone or across frames) unless
 /// `method=nlm`, or light passes ask for the NL-means operator; then the
-/// cross-frame form when the call has neighbours, of the frames as their window prepared them (with no
-/// neighbour on disk the single-frame form, which that equals bit for
-/// bit).
+/// cross-frame form when the call has neighbours, of the frames as their
+/// window prepared them (with no neighbour on disk the single-frame form,
+/// which that equals bit for bit).
 bool denoise_call(const Call& c)
 {
     const bool layered = c.layers && !c.layers->images.empty();
@@ -339,8 +339,9 @@ const std::vector<Command>& command_table()
         { "denoise", "denoise_network", "denoise_network.h", {}, {},
           "The one-call denoiser. By default Open Image Denoise 2.x's trained networks (its "
           "published weights, run by mcdenoise's own engine) with OIDN's pipeline: autoexposure, "
-          "the albedo and normal guides prefiltered, the beauty's network at high quality. With "
-          ":method=nlm (and, until the network has those modes, with --aovs or --temporal) the "
+          "the albedo and normal guides prefiltered, the beauty's network at high quality; with "
+          "--temporal each frame's network result averaged across the frames that show the same "
+          "thing. With :method=nlm (and, until the network has a light-pass mode, with --aovs) the "
           "NL-means operator: takes the firefly excess out, runs non-local means with the "
           "variance (from the variance guide, the halves, or estimated) and the feature weight of "
           "every guide present, and spreads the excess back over its neighbourhood, so the frame "

@@ -60,3 +60,29 @@ def test_a_missing_weight_file_is_named(tmp_path):
             shutil.copy(os.path.join(source, name), tmp_path / name)
     with pytest.raises(mcdenoise.Error, match="rt_hdr_small.tza.*fetch-weights"):
         mcdenoise.denoise_network(noisy()[..., :3], quality="fast", weights_dir=str(tmp_path))
+
+
+def test_neighbours_average_the_frames_results_and_prepared_frames_give_the_same():
+    """With `neighbours` on a still shot (the same picture, new noise per
+    frame) the result lies between the frames' own network results and is
+    closer to the truth; a neighbour made once with prepare_network_frame
+    gives the same result as one given as (offset, beauty, guides)."""
+    h, w = 48, 64
+    truth = np.broadcast_to(np.linspace(0.2, 2.0, w, dtype=np.float32)[None, :, None], (h, w, 3))
+    frames = []
+    for seed in (1, 2, 3):
+        rng = np.random.default_rng(seed)
+        frames.append(np.ascontiguousarray(truth * rng.gamma(4.0, 0.25, (h, w, 3)).astype(np.float32)))
+    g = guides(h, w)
+    own = [mcdenoise.denoise_network(f, g, quality="fast") for f in frames]
+    out = mcdenoise.denoise_network(frames[1], g, neighbours=[(-1, frames[0], g), (1, frames[2], g)],
+                                    quality="fast")
+    lo, hi = np.minimum.reduce(own), np.maximum.reduce(own)
+    assert np.all(out >= lo - 1e-6 * np.abs(lo)) and np.all(out <= hi + 1e-6 * np.abs(hi))
+    error = lambda x: float(np.mean((x - truth) ** 2 / (truth ** 2 + 0.01)))  # noqa: E731
+    assert error(out) < 0.8 * error(own[1])
+    made = mcdenoise.prepare_network_frame(frames[2], g, quality="fast")
+    again = mcdenoise.denoise_network(frames[1], g, neighbours=[(-1, frames[0], g), (1, made)], quality="fast")
+    np.testing.assert_array_equal(again, out)
+    with pytest.raises(TypeError, match="neighbours\\[0\\]"):
+        mcdenoise.denoise_network(frames[1], g, neighbours=[(1, frames[0])])
