@@ -1,7 +1,9 @@
 """The cross-frame denoise from Python and in mcdenoise.batch, on a small
 testrender camera move: mcdenoise.denoise(beauty, guides, neighbours=[(offset,
-beauty, guides), ...]) gives bit for bit what `mcdtool --temporal` writes (as
-float), also with neighbours prepared once (prepare_frame); an empty list
+beauty, guides), ...]) gives bit for bit what `mcdtool --denoise:method=nlm
+--temporal` writes (as float), also with neighbours prepared once
+(prepare_frame), and mcdenoise.denoise_network(..., neighbours=...) what
+`mcdtool --denoise --temporal` writes; an empty list
 gives the single-frame result; malformed neighbours are
 a TypeError; the batch with --temporal writes the same files as one mcdtool
 run, whatever the chunks (each task reads the frames its chunk needs)."""
@@ -33,7 +35,8 @@ def frame_arrays(pattern, frame):
 
 
 def test_binding_equals_mcdtool_temporal(truck, tmp_path):
-    r = mcdtool(truck, "--frames", "3", "--denoise", "--temporal", 2, "-d", "float", "-o", tmp_path / "o.####.exr")
+    r = mcdtool(truck, "--frames", "3", "--denoise:method=nlm", "--temporal", 2, "-d", "float", "-o",
+                tmp_path / "o.####.exr")
     assert r.returncode == 0, r.stderr
     beauty, guides = frame_arrays(truck, 3)
     neighbours = [(offset, *frame_arrays(truck, 3 + offset)) for offset in (-2, -1, 1, 2)]
@@ -60,6 +63,17 @@ def test_malformed_neighbours_are_type_errors(truck):
         mcdenoise.denoise(beauty, guides, neighbours=3)
     with pytest.raises(mcdenoise.Error):
         mcdenoise.denoise(beauty, guides, neighbours=[(0, beauty, guides)])
+
+
+def test_network_binding_equals_mcdtool_temporal(truck, tmp_path):
+    r = mcdtool(truck, "--frames", "3", "--denoise", "--temporal", 2, "-d", "float", "-o", tmp_path / "o.####.exr")
+    assert r.returncode == 0, r.stderr
+    beauty, guides = frame_arrays(truck, 3)
+    neighbours = [(offset, *frame_arrays(truck, 3 + offset)) for offset in (-2, -1, 1, 2)]
+    result = mcdenoise.denoise_network(beauty, guides, neighbours=neighbours)
+    written, _ = read_pixels(tmp_path / "o.0003.exr")
+    assert result.tobytes() == np.ascontiguousarray(written[:, :, :3]).tobytes()
+    assert not np.array_equal(result, mcdenoise.denoise_network(beauty, guides))
 
 
 @pytest.mark.parametrize("chunk_size", [1, 2])
