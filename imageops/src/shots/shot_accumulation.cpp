@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 namespace mcdenoise {
@@ -47,17 +46,6 @@ bool image_planes(ImageBuf& dst, const ImageBuf& image, int nthreads, Planes<flo
     }
     out = channel_planes(block, nthreads);
     return true;
-}
-
-// The neighbours' indices in the order of their offsets: the order
-// `carry_neighbours` carries them in.
-std::vector<size_t> offset_order(const std::vector<int>& offsets)
-{
-    std::vector<size_t> order(offsets.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
-    return order;
 }
 
 // The value of channel `c` of `p` at (x, y), and whether it counts (finite).

@@ -20,6 +20,15 @@ CarryRegions temporal_regions(const ROI& roi, const ROI& dw)
              grow_and_clip(roi, denoise_search_radius, dw) };
 }
 
+std::vector<size_t> offset_order(const std::vector<int>& offsets)
+{
+    std::vector<size_t> order(offsets.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
+    return order;
+}
+
 void carry_neighbours(const PreparedFrameData& centre,
                       const std::vector<const PreparedFrameData*>& neighbours,
                       const std::vector<int>& offsets, const CarryRegions& r, int nthreads,
@@ -29,11 +38,7 @@ void carry_neighbours(const PreparedFrameData& centre,
     for (const PreparedFrameData* f : neighbours)
         motions.push_back(f->has_motion() ? &f->motion : nullptr);
     motions.insert(motions.begin(), centre.has_motion() ? &centre.motion : nullptr);
-    std::vector<size_t> order(neighbours.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return offsets[a] < offsets[b]; });
-    for (size_t i : order)
+    for (size_t i : offset_order(offsets))
         carried.push_back(carry_frame(neighbours[i]->planes, neighbours[i]->given_excess,
                                       neighbours[i]->input.beauty->roi(),
                                       motion_steps(motions, offsets, offsets[i]), offsets[i], r,

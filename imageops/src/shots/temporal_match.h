@@ -20,6 +20,10 @@ namespace mcdenoise {
 /// search windows).
 CarryRegions temporal_regions(const OIIO::ROI& roi, const OIIO::ROI& dw);
 
+/// The indices of `offsets` in increasing order of offset: the order
+/// `carry_neighbours` carries the neighbours in.
+std::vector<size_t> offset_order(const std::vector<int>& offsets);
+
 /// Carry every neighbour (the frames at `offsets`) into the centre's
 /// regions `r`, appended to `carried` in the order of their offsets, so
 /// that sums over them do not depend on the order they are listed in.
